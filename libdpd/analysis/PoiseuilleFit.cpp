@@ -1,0 +1,185 @@
+#include "analysis/PoiseuilleFit.hpp"
+
+#include "analysis/WeightedPolyFit.hpp"
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace dpd {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr std::size_t kMinPoints = 4;  // 3 coefficients + 1 degree of freedom to measure the scatter
+
+void checkProfile(const Profile1D& p, const char* who) {
+    if (p.u.size() != p.y.size() || (!p.uErr.empty() && p.uErr.size() != p.y.size()))
+        throw std::invalid_argument(std::string(who) + ": the profile arrays y, u, uErr differ in size");
+}
+
+void checkBodyForce(double g, const char* who) {
+    // The viscosity comes from the curvature per unit force; without a force there is nothing to measure.
+    if (!std::isfinite(g) || g == 0.0)
+        throw std::invalid_argument(std::string(who) + ": the body force g must be finite and nonzero");
+}
+
+// The profile points whose y passes `keep`, with y mapped by `coordinate` (identity or periodic wrap).
+// Points outside are never looked at, so garbage there (even NaN or a zero error) does not matter.
+Profile1D selectPoints(const Profile1D& p, const std::function<double(double)>& coordinate,
+                       const std::function<bool(double)>& keep) {
+    Profile1D s;
+    for (std::size_t i = 0; i < p.y.size(); ++i) {
+        const double y = coordinate(p.y[i]);
+        if (!keep(y)) continue;
+        s.y.push_back(y);
+        s.u.push_back(p.u[i]);
+        if (!p.uErr.empty()) s.uErr.push_back(p.uErr[i]);
+    }
+    return s;
+}
+
+void requireEnoughPoints(const Profile1D& s, const std::string& where) {
+    if (s.y.size() < kMinPoints)
+        throw std::invalid_argument(where + ": " + std::to_string(s.y.size()) +
+                                    " profile points in the fit range, at least " + std::to_string(kMinPoints) +
+                                    " are needed (3 coefficients + 1 degree of freedom)");
+}
+
+// sqrt(grad^T C grad): the delta-method standard error of a function with gradient grad.
+double propagatedError(const Eigen::Vector3d& grad, const Eigen::MatrixXd& cov) {
+    return std::sqrt(grad.dot(cov * grad));
+}
+
+// nu = -g / (2 c2), hence dnu/dc2 = g / (2 c2^2) and only var(c2) enters. The `sign` is -1 where the
+// force is +g (curvature -g/(2 nu)) and +1 where it is -g.
+struct Viscosity {
+    double value, error;
+};
+
+Viscosity viscosityFromCurvature(const PolyFitResult& fit, double g, double sign) {
+    const double c2 = fit.coefficients(2);
+    return {sign * g / (2.0 * c2), std::abs(g / (2.0 * c2 * c2)) * fit.standardError(2)};
+}
+
+// Navier slip at the wall y = yw with inward normal n (+1 lower wall, -1 upper wall):
+//   s     = c0 + c1 yw + c2 yw^2 - U_wall          ds/dc     = (1, yw, yw^2)
+//   gamma = n (c1 + 2 c2 yw)                        dgamma/dc = n (0, 1, 2 yw)
+//   beta  = s / gamma                               dbeta/dc  = (ds/dc - beta dgamma/dc) / gamma
+WallFitResult wallFit(const PolyFitResult& fit, double yw, double uWall, double inwardNormal) {
+    const Eigen::VectorXd& c = fit.coefficients;
+    WallFitResult w;
+    w.position = yw;
+    w.wallVelocity = uWall;
+    w.slipVelocity = fit.evaluate(yw) - uWall;
+    w.shearRate = inwardNormal * (c(1) + 2.0 * c(2) * yw);
+    w.slipLength = w.slipVelocity / w.shearRate;
+
+    const Eigen::Vector3d dSlip(1.0, yw, yw * yw);
+    const Eigen::Vector3d dShear = inwardNormal * Eigen::Vector3d(0.0, 1.0, 2.0 * yw);
+    w.slipVelocityErr = propagatedError(dSlip, fit.covariance);
+    w.slipLengthErr = propagatedError((dSlip - w.slipLength * dShear) / w.shearRate, fit.covariance);
+    return w;
+}
+
+PolyFitResult fitParabola(const Profile1D& s, bool scaleByChi2) {
+    return fitPolynomial(s.y, s.u, s.uErr, 2, scaleByChi2);
+}
+
+// chi^2 per degree of freedom with respect to the errors as given (the fit stores the unscaled chi^2).
+double chi2PerDof(double chi2, int dof) { return dof > 0 ? chi2 / dof : 0.0; }
+
+Viscosity scaled(Viscosity v, double factor) { return {v.value, v.error * factor}; }
+
+// Inverse-variance weighted mean of two estimates. A zero error (exact data) would give infinite weight:
+// such estimates are then averaged among themselves.
+Viscosity combine(Viscosity a, Viscosity b) {
+    if (a.error == 0.0 && b.error == 0.0) return {0.5 * (a.value + b.value), 0.0};
+    if (a.error == 0.0) return a;
+    if (b.error == 0.0) return b;
+    const double wa = 1.0 / (a.error * a.error), wb = 1.0 / (b.error * b.error);
+    return {(wa * a.value + wb * b.value) / (wa + wb), 1.0 / std::sqrt(wa + wb)};
+}
+
+}  // namespace
+
+PoiseuilleFitResult fitPoiseuille(const Profile1D& p, double g, double yLow, double yHigh, double exclude,
+                                  double uWallLow, double uWallHigh) {
+    const char* who = "fitPoiseuille";
+    checkProfile(p, who);
+    checkBodyForce(g, who);
+    if (!(yHigh > yLow)) throw std::invalid_argument("fitPoiseuille: yHigh must be above yLow");
+    if (!(exclude >= 0.0)) throw std::invalid_argument("fitPoiseuille: exclude must be >= 0");
+
+    const double lo = yLow + exclude, hi = yHigh - exclude;
+    const Profile1D s = selectPoints(p, [](double y) { return y; }, [&](double y) { return y >= lo && y <= hi; });
+    requireEnoughPoints(s, "fitPoiseuille: y in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    const PolyFitResult fit = fitParabola(s, true);
+    const Eigen::VectorXd& c = fit.coefficients;
+
+    PoiseuilleFitResult r;
+    const Viscosity nu = viscosityFromCurvature(fit, g, -1.0);
+    r.nu = nu.value;
+    r.nuErr = nu.error;
+    r.lower = wallFit(fit, yLow, uWallLow, +1.0);
+    r.upper = wallFit(fit, yHigh, uWallHigh, -1.0);
+    r.centre = -c(1) / (2.0 * c(2));
+    r.maxVelocity = fit.evaluate(r.centre);
+    r.dof = fit.dof;
+    r.chi2PerDof = chi2PerDof(fit.chi2, fit.dof);
+    r.coefficients = {c(0), c(1), c(2)};
+    return r;
+}
+
+ReversePoiseuilleResult fitReversePoiseuille(const Profile1D& p, double g, double yLo, double length,
+                                             double exclude) {
+    const char* who = "fitReversePoiseuille";
+    checkProfile(p, who);
+    checkBodyForce(g, who);
+    if (!(length > 0.0) || !std::isfinite(length))
+        throw std::invalid_argument("fitReversePoiseuille: the box length must be positive");
+    const double half = 0.5 * length;
+    if (!(exclude >= 0.0 && exclude < 0.5 * half))
+        throw std::invalid_argument("fitReversePoiseuille: exclude must lie in [0, L/4)");
+
+    // Work in the offset s = y - yLo wrapped into [0, L): each half is then one contiguous interval.
+    const auto wrap = [&](double y) {
+        const double s = y - yLo;
+        return s - length * std::floor(s / length);
+    };
+    const auto inFirst = [&](double s) { return s < half && s >= exclude && half - s >= exclude; };
+    const auto inSecond = [&](double s) { return s >= half && s - half >= exclude && length - s >= exclude; };
+    const Profile1D first = selectPoints(p, wrap, inFirst);
+    const Profile1D second = selectPoints(p, wrap, inSecond);
+    requireEnoughPoints(first, "fitReversePoiseuille: first half (force +g)");
+    requireEnoughPoints(second, "fitReversePoiseuille: second half (force -g)");
+
+    // Both halves share one noise model, so the scatter factor (reduced chi^2) is estimated once from both
+    // together: scaling each half by its own, noisier, chi^2 would feed that noise into the weights of the
+    // combination and make the combined error too small (it then covers the truth clearly less than 68%).
+    const PolyFitResult fit1 = fitParabola(first, false), fit2 = fitParabola(second, false);
+    const int dof = fit1.dof + fit2.dof;
+    const double scatter = std::sqrt((fit1.chi2 + fit2.chi2) / dof);
+    const Viscosity nu1 = scaled(viscosityFromCurvature(fit1, g, -1.0), scatter);
+    const Viscosity nu2 = scaled(viscosityFromCurvature(fit2, g, +1.0), scatter);
+    const Viscosity nu = combine(nu1, nu2);
+
+    ReversePoiseuilleResult r;
+    r.nu = nu.value;
+    r.nuErr = nu.error;
+    r.nuFirstHalf = nu1.value;
+    r.nuFirstHalfErr = nu1.error;
+    r.nuSecondHalf = nu2.value;
+    r.nuSecondHalfErr = nu2.error;
+    r.chi2PerDof = chi2PerDof(fit1.chi2 + fit2.chi2, dof);
+    return r;
+}
+
+double kineticTheoryViscosity(double kT, double gamma, double rho, double rc) {
+    const double kinetic = 45.0 * kT / (4.0 * kPi * gamma * rho * rc * rc * rc);
+    const double dissipative = 2.0 * kPi * gamma * rho * std::pow(rc, 5) / 1575.0;
+    return kinetic + dissipative;
+}
+
+}  // namespace dpd

@@ -1,0 +1,48 @@
+#include "core/Particles.hpp"
+
+namespace dpd {
+
+namespace {
+template <class T>
+void permuteArray(std::vector<T>& a, const std::vector<std::uint32_t>& order, std::vector<T>& scratch) {
+    scratch.resize(a.size());
+    for (std::size_t k = 0; k < order.size(); ++k) scratch[k] = a[order[k]];
+    a.swap(scratch);
+}
+}  // namespace
+
+void Particles::resize(std::size_t n) {
+    for (auto* a : {&rx, &ry, &rz, &vx, &vy, &vz, &fx, &fy, &fz}) a->resize(n, 0.0);
+    id.resize(n, 0);
+    species.resize(n, 0);
+}
+
+void Particles::reserve(std::size_t n) {
+    for (auto* a : {&rx, &ry, &rz, &vx, &vy, &vz, &fx, &fy, &fz}) a->reserve(n);
+    id.reserve(n);
+    species.reserve(n);
+}
+
+void Particles::add(std::uint64_t particleId, int speciesIndex, double x, double y, double z,
+                    double ux, double uy, double uz) {
+    rx.push_back(x); ry.push_back(y); rz.push_back(z);
+    vx.push_back(ux); vy.push_back(uy); vz.push_back(uz);
+    fx.push_back(0.0); fy.push_back(0.0); fz.push_back(0.0);
+    id.push_back(particleId);
+    species.push_back(static_cast<std::uint8_t>(speciesIndex));
+}
+
+void Particles::permute(const std::vector<std::uint32_t>& order) {
+    std::vector<double> scratch;
+    for (auto* a : {&rx, &ry, &rz, &vx, &vy, &vz, &fx, &fy, &fz}) permuteArray(*a, order, scratch);
+    std::vector<std::uint64_t> idScratch;
+    permuteArray(id, order, idScratch);
+    std::vector<std::uint8_t> speciesScratch;
+    permuteArray(species, order, speciesScratch);
+}
+
+void Particles::clearForces() {
+    for (auto* a : {&fx, &fy, &fz}) std::fill(a->begin(), a->end(), 0.0);
+}
+
+}  // namespace dpd

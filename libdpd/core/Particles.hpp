@@ -1,0 +1,26 @@
+#pragma once
+// Particles as a structure of arrays: each component is contiguous, so the pair loop and the
+// integrators stream through memory and the compiler can vectorise them.
+#include <cstdint>
+#include <vector>
+
+namespace dpd {
+
+struct Particles {
+    std::vector<double> rx, ry, rz;  // positions
+    std::vector<double> vx, vy, vz;  // velocities
+    std::vector<double> fx, fy, fz;  // forces (per unit mass: all masses are 1)
+    std::vector<std::uint64_t> id;   // permanent identity: keys the random numbers, survives sorting
+    std::vector<std::uint8_t> species;
+
+    std::size_t size() const { return id.size(); }
+    void resize(std::size_t n);
+    void reserve(std::size_t n);
+    void add(std::uint64_t particleId, int speciesIndex, double x, double y, double z,
+             double ux = 0.0, double uy = 0.0, double uz = 0.0);
+    // Reorder every array so that new index k holds the particle that was at order[k].
+    void permute(const std::vector<std::uint32_t>& order);
+    void clearForces();
+};
+
+}  // namespace dpd

@@ -1,0 +1,30 @@
+#include "integrators/EulerIntegrator.hpp"
+
+#include "run/System.hpp"
+
+namespace dpd {
+
+WallCounters EulerIntegrator::step(System& sys) {
+    Particles& p = sys.particles;
+    const double dt = sys.dt();
+    const auto& frozen = sys.frozenOfSpecies();
+    const long n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+        p.rx[i] += dt * p.vx[i];
+        p.ry[i] += dt * p.vy[i];
+        p.rz[i] += dt * p.vz[i];
+        if (frozen[p.species[i]]) continue;  // frozen particles keep their (wall) velocity
+        p.vx[i] += dt * p.fx[i];
+        p.vy[i] += dt * p.fy[i];
+        p.vz[i] += dt * p.fz[i];
+    }
+    sys.wrapPositions();
+    sys.advanceClock();
+    const WallCounters walls = sys.applyWalls();
+    sys.sortByCell();
+    sys.computeForces();
+    return walls;
+}
+
+}  // namespace dpd

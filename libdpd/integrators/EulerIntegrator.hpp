@@ -1,0 +1,14 @@
+#pragma once
+// The explicit Euler scheme of the original DPD papers (Hoogerbrugge & Koelman 1992): positions with
+// the old velocities, velocities with the old forces. Poor (kT drifts with dt); kept for comparison.
+#include "integrators/Integrator.hpp"
+
+namespace dpd {
+
+class EulerIntegrator : public Integrator {
+public:
+    std::string name() const override { return "Euler"; }
+    WallCounters step(System& sys) override;
+};
+
+}  // namespace dpd

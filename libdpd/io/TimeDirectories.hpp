@@ -1,0 +1,23 @@
+#pragma once
+// Time directories of a case, named as OpenFOAM names them ("0", "20", "0.5").
+#include <string>
+#include <vector>
+
+namespace dpd {
+
+struct TimeDirectory {
+    double value;
+    std::string name;
+};
+
+// The name of a time: shortest decimal form at ten significant digits, so that 1000 x 0.02 is "20".
+std::string timeName(double t);
+// Every directory of the case whose name is a number, in increasing time.
+std::vector<TimeDirectory> listTimes(const std::string& caseDir);
+// Time selection of the post-processing tools: -time T (a name, a value, or a comma list),
+// -latestTime, or (neither) every time but 0. Throws std::runtime_error naming the case when the
+// selection finds nothing.
+std::vector<TimeDirectory> selectTimes(const std::string& caseDir, const std::string& timeOption, bool latestTime,
+                                       bool includeZero = false);
+
+}  // namespace dpd

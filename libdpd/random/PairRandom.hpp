@@ -1,0 +1,72 @@
+#pragma once
+// Random numbers for pair forces and for per-particle draws, keyed by (seed, step, identities).
+//
+// Pair noise: zeta_ij must equal zeta_ji, have zero mean and unit variance, and be independent for
+// every pair and step. The fluctuation-dissipation theorem fixes only the first two moments, so a
+// uniform variate scaled to unit variance (sqrt(12) (u - 1/2)) serves as well as a Gaussian and is
+// cheaper (Groot & Warren 1997). One Philox call yields four 32-bit words; the pair force needs one.
+#include "random/Philox.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace dpd {
+
+class PairRandom {
+public:
+    explicit PairRandom(std::uint64_t seed = 0) : key_{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)} {}
+
+    // Unit-variance uniform variate for the pair (idA, idB) at a step; symmetric in the two ids.
+    double pairUniform(std::uint64_t step, std::uint64_t idA, std::uint64_t idB) const {
+        const std::uint64_t lo = idA < idB ? idA : idB;
+        const std::uint64_t hi = idA < idB ? idB : idA;
+        // Ids up to 2^32 each; the step fills the other two words (64-bit steps).
+        const PhiloxCounter c{static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi),
+                              static_cast<std::uint32_t>(step), static_cast<std::uint32_t>(step >> 32) ^ kPairStream};
+        const std::uint32_t bits = philox4x32(c, key_)[0];
+        return kSqrt12 * (uniformOpen01(bits) - 0.5);
+    }
+
+    // Four independent standard normal variates for one particle at a step; `stream` separates
+    // independent uses (thermostat walls, reflections, initial velocities ...).
+    std::array<double, 4> particleGaussians(std::uint64_t step, std::uint64_t id, std::uint32_t stream) const {
+        const PhiloxCounter c{static_cast<std::uint32_t>(id), static_cast<std::uint32_t>(id >> 32),
+                              static_cast<std::uint32_t>(step),
+                              (static_cast<std::uint32_t>(step >> 32) & 0xFFFFu) | (stream << 16)};
+        const PhiloxCounter w = philox4x32(c, key_);
+        // Box-Muller on two pairs of uniforms.
+        std::array<double, 4> g{};
+        for (int k = 0; k < 2; ++k) {
+            const double radius = std::sqrt(-2.0 * std::log(uniformOpen01(w[2 * k])));
+            const double angle = 2.0 * M_PI * uniformOpen01(w[2 * k + 1]);
+            g[2 * k] = radius * std::cos(angle);
+            g[2 * k + 1] = radius * std::sin(angle);
+        }
+        return g;
+    }
+
+    // Four independent uniforms on (0,1) for one particle at a step.
+    std::array<double, 4> particleUniforms(std::uint64_t step, std::uint64_t id, std::uint32_t stream) const {
+        const PhiloxCounter c{static_cast<std::uint32_t>(id), static_cast<std::uint32_t>(id >> 32),
+                              static_cast<std::uint32_t>(step),
+                              (static_cast<std::uint32_t>(step >> 32) & 0xFFFFu) | (stream << 16)};
+        const PhiloxCounter w = philox4x32(c, key_);
+        return {uniformOpen01(w[0]), uniformOpen01(w[1]), uniformOpen01(w[2]), uniformOpen01(w[3])};
+    }
+
+private:
+    static constexpr double kSqrt12 = 3.4641016151377545870548926830117;
+    // Pair draws use the top bits of the fourth word, which per-particle streams (< 0x8000) never set.
+    static constexpr std::uint32_t kPairStream = 0x80000000u;
+    PhiloxKey key_;
+};
+
+// Named streams for per-particle draws, so no two uses share numbers.
+enum RandomStream : std::uint32_t {
+    kStreamInitialVelocity = 1,
+    kStreamInitialPosition = 2,
+    kStreamReflection = 3,
+    kStreamWallThermostat = 4,
+};
+
+}  // namespace dpd

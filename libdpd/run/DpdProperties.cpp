@@ -1,0 +1,204 @@
+#include "run/DpdProperties.hpp"
+
+#include "core/Error.hpp"
+#include "io/Dictionary.hpp"
+#include "io/Snapshot.hpp"
+#include "run/System.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace dpd {
+
+namespace {
+
+int axisFromName(const Dictionary& d, const std::string& key) {
+    const std::string s = d.get<std::string>(key);
+    if (s == "x") return 0;
+    if (s == "y") return 1;
+    if (s == "z") return 2;
+    d.fail(key, "expected x, y or z, not '" + s + "'");
+}
+
+SpeciesTable readSpecies(const Dictionary& d) {
+    const Dictionary& sd = d.subDict("species");
+    SpeciesTable table;
+    for (const std::string& name : sd.keys()) {
+        if (!sd.isDict(name)) sd.fail(name, "each species is a sub-dictionary, e.g. fluid { frozen no; }");
+        if (name.find('-') != std::string::npos) sd.fail(name, "a species name may not contain '-'");
+        const Dictionary& s = sd.subDict(name);
+        s.checkKeys({"frozen"});
+        table.add({name, s.getOrDefault<bool>("frozen", false)});
+    }
+    if (table.size() == 0) d.fail("species", "at least one species is needed");
+    if (table.size() > 255) d.fail("species", "at most 255 species");
+    return table;
+}
+
+PairTable readPairs(const Dictionary& d, const SpeciesTable& species) {
+    const Dictionary& pd = d.subDict("pairCoeffs");
+    PairTable table(species.size());
+    std::vector<bool> given(species.size() * species.size(), false);
+    for (const std::string& key : pd.keys()) {
+        const auto dash = key.find('-');
+        const int a = dash == std::string::npos ? -1 : species.indexOf(key.substr(0, dash));
+        const int b = dash == std::string::npos ? -1 : species.indexOf(key.substr(dash + 1));
+        if (a < 0 || b < 0) pd.fail(key, "expected <species>-<species> with species from the 'species' dictionary");
+        if (!pd.isDict(key)) pd.fail(key, "expected a sub-dictionary { a ...; gamma ...; }");
+        const Dictionary& c = pd.subDict(key);
+        c.checkKeys({"a", "gamma"});
+        table.set(a, b, {c.get<double>("a"), c.getNonNegative<double>("gamma"), 0.0, true});
+        given[a * species.size() + b] = given[b * species.size() + a] = true;
+    }
+    for (int a = 0; a < species.size(); ++a)
+        for (int b = a; b < species.size(); ++b)
+            if (!given[a * species.size() + b] && !(species[a].frozen && species[b].frozen))
+                d.fail("pairCoeffs", "no coefficients for the pair " + species[a].name + "-" + species[b].name);
+    return table;
+}
+
+IntegratorSettings readIntegrator(const Dictionary& d) {
+    IntegratorSettings s;
+    if (!d.found("integrator")) return s;
+    const Dictionary& id = d.subDict("integrator");
+    id.checkKeys({"type", "lambda"});
+    s.type = id.get<std::string>("type");
+    if (s.type != "Euler" && s.type != "GrootWarren") id.fail("type", "expected Euler or GrootWarren");
+    s.lambda = id.getOrDefault<double>("lambda", 0.65);
+    if (s.lambda < 0.0 || s.lambda > 1.0) id.fail("lambda", "must lie in [0, 1]");
+    return s;
+}
+
+BodyForce readBodyForce(const Dictionary& d, int dimension) {
+    BodyForce f;
+    if (!d.found("bodyForce")) return f;
+    const Dictionary& bd = d.subDict("bodyForce");
+    bd.checkKeys({"type", "value", "gradientAxis"});
+    const std::string type = bd.get<std::string>("type");
+    try {
+        f.type = bodyForceTypeFromName(type);
+    } catch (const std::invalid_argument& e) {
+        bd.fail("type", e.what());
+    }
+    if (f.type == BodyForce::Type::none) return f;
+    f.g = bd.get<Eigen::Vector3d>("value");
+    if (dimension == 2 && f.g.y() != 0.0) bd.fail("value", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    if (f.type == BodyForce::Type::reversePoiseuille) {
+        f.gradientAxis = axisFromName(bd, "gradientAxis");
+        if (f.g[f.gradientAxis] != 0.0) bd.fail("value", "must be perpendicular to gradientAxis");
+    }
+    return f;
+}
+
+PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dimension) {
+    wd.checkKeys({"type", "point", "normal", "velocity", "reflection"});
+    const std::string type = wd.get<std::string>("type");
+    if (type != "plane") wd.fail("type", "expected plane (the only wall shape so far)");
+    PlanarWall w;
+    w.name = name;
+    w.point = wd.get<Eigen::Vector3d>("point");
+    w.normal = wd.get<Eigen::Vector3d>("normal");
+    if (w.normal.norm() == 0.0) wd.fail("normal", "must not be zero");
+    w.normal.normalize();
+    if (dimension == 2 && w.normal.y() != 0.0) wd.fail("normal", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    w.velocity = wd.getOrDefault<Eigen::Vector3d>("velocity", Eigen::Vector3d::Zero());
+    if (std::abs(w.velocity.dot(w.normal)) > 1e-12) wd.fail("velocity", "a wall can only slide in its own plane");
+    try {
+        w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", "bounceBack"));
+    } catch (const std::invalid_argument& e) {
+        wd.fail("reflection", e.what());
+    }
+    return w;
+}
+
+WallSet readWalls(const Dictionary& d, int dimension) {
+    WallSet walls;
+    if (!d.found("walls")) return walls;
+    const Dictionary& wd = d.subDict("walls");
+    for (const std::string& name : wd.keys()) {
+        if (!wd.isDict(name)) wd.fail(name, "each wall is a sub-dictionary");
+        walls.add(readPlanarWall(wd.subDict(name), name, dimension));
+    }
+    return walls;
+}
+
+StabilitySettings readStability(const Dictionary& d) {
+    StabilitySettings s;
+    if (!d.found("stability")) return s;
+    const Dictionary& sd = d.subDict("stability");
+    sd.checkKeys({"maxKTRatio", "maxInsideWalls"});
+    s.maxKTRatio = sd.getOrDefault<double>("maxKTRatio", s.maxKTRatio);
+    if (s.maxKTRatio <= 1.0) sd.fail("maxKTRatio", "must be greater than 1");
+    s.maxInsideWalls = sd.getOrDefault<long>("maxInsideWalls", s.maxInsideWalls);
+    if (s.maxInsideWalls < 0) sd.fail("maxInsideWalls", "must not be negative");
+    return s;
+}
+
+}  // namespace
+
+DpdModel readDpdModel(const Dictionary& d) {
+    d.checkKeys({"dimension", "kT", "cutoff", "seed", "weightExponent", "species", "pairCoeffs", "integrator",
+                 "bodyForce", "walls", "stability"});
+    DpdModel m;
+    m.dimension = d.getOrDefault<int>("dimension", 3);
+    if (m.dimension != 2 && m.dimension != 3) d.fail("dimension", "must be 2 or 3");
+    m.kT = d.getPositive<double>("kT");
+    m.cutoff = d.found("cutoff") ? d.getPositive<double>("cutoff") : 1.0;
+    m.weightExponent = d.found("weightExponent") ? d.getPositive<double>("weightExponent") : 2.0;
+    const long seed = d.getOrDefault<long>("seed", 1);
+    if (seed < 0) d.fail("seed", "must not be negative");
+    m.seed = static_cast<std::uint64_t>(seed);
+    m.species = readSpecies(d);
+    m.pairs = readPairs(d, m.species);
+    m.integrator = readIntegrator(d);
+    m.bodyForce = readBodyForce(d, m.dimension);
+    m.walls = readWalls(d, m.dimension);
+    m.stability = readStability(d);
+    return m;
+}
+
+DpdModel readDpdProperties(const std::string& caseDir) {
+    return readDpdModel(Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string()));
+}
+
+System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile) {
+    if (snapshot.box.dimension != model.dimension)
+        throw IoError(snapshotFile + ": the snapshot is " + std::to_string(snapshot.box.dimension) +
+                      "-D but constant/dpdProperties says dimension " + std::to_string(model.dimension));
+    // Map the snapshot's species numbering onto the model's, by name.
+    std::vector<std::uint8_t> map(snapshot.speciesNames.size());
+    for (std::size_t k = 0; k < snapshot.speciesNames.size(); ++k) {
+        const int idx = model.species.indexOf(snapshot.speciesNames[k]);
+        if (idx < 0)
+            throw IoError(snapshotFile + ": species '" + snapshot.speciesNames[k] +
+                          "' is not defined in constant/dpdProperties");
+        map[k] = static_cast<std::uint8_t>(idx);
+    }
+    System sys;
+    sys.box = snapshot.box;
+    sys.particles = std::move(snapshot.particles);
+    for (auto& s : sys.particles.species) s = map[s];
+    sys.species = model.species;
+    sys.pairs = model.pairs;
+    sys.forceParameters = {model.cutoff, model.weightExponent, model.kT, dt};
+    sys.seed = model.seed;
+    sys.bodyForce = model.bodyForce;
+    sys.walls = model.walls;
+    sys.step = snapshot.step;
+    sys.time = snapshot.time;
+    for (const auto& w : model.walls.walls())
+        for (int a = 0; a < 3; ++a)
+            if (sys.box.isActiveAxis(a) && (w.point[a] < sys.box.lo[a] || w.point[a] > sys.box.hi[a]))
+                throw IoError("constant/dpdProperties: wall '" + w.name + "' has its point outside the box of " + snapshotFile);
+    sys.initialise();
+    return sys;
+}
+
+int flowProfileAxis(const DpdModel& model) {
+    for (const auto& w : model.walls.walls())
+        if (w.normalAxis() >= 0) return w.normalAxis();
+    if (model.bodyForce.type == BodyForce::Type::reversePoiseuille) return model.bodyForce.gradientAxis;
+    return -1;
+}
+
+}  // namespace dpd

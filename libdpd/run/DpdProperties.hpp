@@ -1,0 +1,63 @@
+#pragma once
+// constant/dpdProperties: the physics of a case.
+//
+//   dimension      3;             // 2: the scene lives in the x-z plane
+//   kT             1;
+//   cutoff         1;
+//   seed           12345;
+//   weightExponent 2;             // s in w_D = (1 - r/rc)^s; 2 is standard
+//   species   { fluid { frozen no; } wall { frozen yes; } }
+//   pairCoeffs { fluid-fluid { a 18.75; gamma 4.5; } fluid-wall { a 18.75; gamma 4.5; } }
+//   integrator { type GrootWarren; lambda 0.65; }
+//   bodyForce  { type uniform; value (0.02 0 0); }     // none | uniform | reversePoiseuille (+ gradientAxis z)
+//   walls      { lower { type plane; point (0 0 -20); normal (0 0 1); velocity (0 0 0); reflection bounceBack; } }
+//   stability  { maxKTRatio 2; maxInsideWalls 0; }   // optional
+//
+// Every pair of species that can interact (at least one not frozen) needs its coefficients; pairs
+// of frozen species never interact and need none.
+#include "core/Species.hpp"
+#include "forces/BodyForce.hpp"
+#include "integrators/Integrator.hpp"
+#include "walls/WallSet.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace dpd {
+
+class Dictionary;
+class System;
+struct Snapshot;
+
+struct StabilitySettings {
+    double maxKTRatio = 2.0;  // stop when the measured kT exceeds this multiple of the set kT
+    long maxInsideWalls = 0;  // stop when more mobile particles than this are found inside walls
+};
+
+struct DpdModel {
+    int dimension = 3;
+    double kT = 1.0;
+    double cutoff = 1.0;
+    double weightExponent = 2.0;
+    std::uint64_t seed = 1;
+    SpeciesTable species;
+    PairTable pairs;
+    IntegratorSettings integrator;
+    BodyForce bodyForce;
+    WallSet walls;
+    StabilitySettings stability;
+};
+
+// Reads and checks the dictionary; every error is an InputError naming file, line and keyword.
+DpdModel readDpdModel(const Dictionary& dict);
+DpdModel readDpdProperties(const std::string& caseDir);
+
+// A ready-to-run system: the model's physics, the snapshot's particles (species matched by name),
+// the time step dt. Throws InputError/IoError when the snapshot does not fit the model.
+System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile);
+
+// The axis across which the flow varies (wall normal, or reverse-Poiseuille gradient), -1 if none:
+// used to measure the temperature about the local flow.
+int flowProfileAxis(const DpdModel& model);
+
+}  // namespace dpd

@@ -1,0 +1,30 @@
+#include "run/StandardFluid.hpp"
+
+#include "run/InitialConditions.hpp"
+
+#include <cmath>
+
+namespace dpd {
+
+System makeStandardFluid(const StandardFluidSettings& s) {
+    System sys;
+    const double side = s.dimension == 3 ? std::cbrt(s.particles / s.density) : std::sqrt(s.particles / s.density);
+    sys.box.dimension = s.dimension;
+    sys.box.lo = Eigen::Vector3d(0, 0, 0);
+    sys.box.hi = Eigen::Vector3d(side, s.dimension == 3 ? side : 1.0, side);
+    sys.species.add({"fluid", false});
+    sys.pairs = PairTable(1);
+    sys.pairs.set(0, 0, {s.a, s.gamma, 0.0, true});
+    sys.forceParameters = {s.cutoff, 2.0, s.kT, s.dt};
+    sys.seed = s.seed;
+    const PairRandom random(s.seed);
+    fillRandom(sys.particles, sys.box, sys.box.lo, sys.box.hi, s.density, 0,
+               [](double, double, double) { return true; }, random, 0);
+    maxwellVelocities(sys.particles, 0, sys.particles.size(), s.dimension, s.kT, random);
+    sys.initialise();
+    sys.sortByCell();
+    sys.computeForces();
+    return sys;
+}
+
+}  // namespace dpd

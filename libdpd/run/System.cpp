@@ -1,0 +1,83 @@
+#include "run/System.hpp"
+
+#include "forces/PairForceLoop.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dpd {
+
+namespace {
+
+template <bool kConservative, bool kStandardWeight>
+void pairKernel(Particles& p, const PairLoopContext& ctx, const PairForceParameters& params) {
+    const DpdPairEvaluator<kConservative, kStandardWeight> eval(params);
+    accumulatePairForces(p, ctx, eval, params.cutoff);
+}
+
+}  // namespace
+
+void System::initialise() {
+    if (forceParameters.cutoff <= 0.0) throw std::invalid_argument("the cutoff must be positive");
+    if (forceParameters.dt <= 0.0) throw std::invalid_argument("deltaT must be positive");
+    if (forceParameters.kT < 0.0) throw std::invalid_argument("kT must not be negative");
+    frozenOfSpecies_.assign(species.size(), 0);
+    for (int s = 0; s < species.size(); ++s) frozenOfSpecies_[s] = species[s].frozen ? 1 : 0;
+    // Fluctuation-dissipation fixes sigma; frozen particles never interact with each other.
+    PairTable table(species.size());
+    for (int a = 0; a < species.size(); ++a)
+        for (int b = a; b < species.size(); ++b) {
+            PairCoeffs c = pairs(a, b);
+            c.sigma = std::sqrt(2.0 * c.gamma * forceParameters.kT);
+            if (species[a].frozen && species[b].frozen) c.interact = false;
+            table.set(a, b, c);
+        }
+    pairs = table;
+    random_ = PairRandom(seed);
+    cells_.setup(box, forceParameters.cutoff);
+    conservative_ = pairs.anyConservative();
+    const bool standardWeight = forceParameters.weightExponent == 2.0;
+    if (conservative_) pairKernel_ = standardWeight ? &pairKernel<true, true> : &pairKernel<true, false>;
+    else pairKernel_ = standardWeight ? &pairKernel<false, true> : &pairKernel<false, false>;
+    if (box.dimension == 2)
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            particles.ry[i] = 0.5 * (box.lo.y() + box.hi.y());
+            particles.vy[i] = 0.0;
+        }
+    wrapPositions();
+    initialised_ = true;
+}
+
+void System::wrapPositions() {
+    const long n = static_cast<long>(particles.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+        particles.rx[i] = box.wrap(particles.rx[i], 0);
+        if (box.isActiveAxis(1)) particles.ry[i] = box.wrap(particles.ry[i], 1);
+        particles.rz[i] = box.wrap(particles.rz[i], 2);
+    }
+}
+
+void System::sortByCell() { cells_.sortParticles(particles); }
+
+void System::computeForces() {
+    if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
+    particles.clearForces();
+    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step)};
+    pairKernel_(particles, ctx, forceParameters);
+    bodyForce.apply(particles, frozenOfSpecies_, box);
+}
+
+WallCounters System::applyWalls() {
+    if (walls.empty()) return {};
+    return walls.reflect(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
+                         forceParameters.kT);
+}
+
+std::size_t System::countMobile() const {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < particles.size(); ++i) n += isFrozen(i) ? 0 : 1;
+    return n;
+}
+
+}  // namespace dpd

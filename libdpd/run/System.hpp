@@ -1,0 +1,70 @@
+#pragma once
+// Everything that evolves in a run: box, particles, interactions, external forces and walls, and the
+// clock. Integrators move it; the case reader builds it; monitors and samplers read it.
+#include "core/Box.hpp"
+#include "core/Particles.hpp"
+#include "core/Species.hpp"
+#include "forces/BodyForce.hpp"
+#include "forces/DpdPairForce.hpp"
+#include "neighbour/CellList.hpp"
+#include "random/PairRandom.hpp"
+#include "walls/WallSet.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace dpd {
+
+struct PairLoopContext;
+
+class System {
+public:
+    Box box;
+    Particles particles;
+    SpeciesTable species;
+    PairTable pairs;
+    PairForceParameters forceParameters;  // cutoff, weight exponent, kT, dt
+    std::uint64_t seed = 1;
+    BodyForce bodyForce;
+    WallSet walls;
+    std::int64_t step = 0;
+    double time = 0.0;
+
+    // Call once the fields above are set: lays out the cells, fixes sigma from fluctuation-
+    // dissipation, marks frozen pairs as non-interacting, and picks the pair evaluator that does just
+    // the terms this scene uses.
+    void initialise();
+
+    bool isFrozen(std::size_t i) const { return frozenOfSpecies_[particles.species[i]] != 0; }
+    const std::vector<std::uint8_t>& frozenOfSpecies() const { return frozenOfSpecies_; }
+    const PairRandom& random() const { return random_; }
+    const CellList& cells() const { return cells_; }
+    bool usesConservativeForce() const { return conservative_; }
+    double dt() const { return forceParameters.dt; }
+
+    // Brings every position back into the box.
+    void wrapPositions();
+    // Reorders the particles by cell (call after moving, before computing forces).
+    void sortByCell();
+    // Forces at the current positions and velocities: pair forces (keyed to the current step's random
+    // numbers) plus the body force. Requires sortByCell() since the last move.
+    void computeForces();
+    // Reflects fluid particles that crossed a wall during the last move.
+    WallCounters applyWalls();
+    // Moves the clock on by one step.
+    void advanceClock() { ++step; time += forceParameters.dt; }
+
+    // Diagnostics.
+    std::size_t countMobile() const;
+
+private:
+    using PairKernel = void (*)(Particles&, const PairLoopContext&, const PairForceParameters&);
+    CellList cells_;
+    PairRandom random_;
+    std::vector<std::uint8_t> frozenOfSpecies_;
+    PairKernel pairKernel_ = nullptr;
+    bool conservative_ = true;
+    bool initialised_ = false;
+};
+
+}  // namespace dpd

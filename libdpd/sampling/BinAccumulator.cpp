@@ -1,0 +1,49 @@
+#include "sampling/BinAccumulator.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dpd {
+
+int BinLayout::binOf(double x) const {
+    if (x < lo || x >= hi) return -1;
+    const int b = static_cast<int>((x - lo) / width());
+    return b < nBins ? b : nBins - 1;
+}
+
+BinAccumulator::BinAccumulator(const BinLayout& layout, std::vector<std::uint8_t> speciesMask, long blockSamples)
+    : layout_(layout), speciesMask_(std::move(speciesMask)), blockSamples_(blockSamples) {
+    if (layout.nBins < 1) throw std::invalid_argument("nBins must be at least 1");
+    if (!(layout.hi > layout.lo)) throw std::invalid_argument("the bin range must have hi > lo");
+    if (blockSamples < 1) throw std::invalid_argument("a block must hold at least one sample");
+}
+
+void BinAccumulator::sample(const Particles& p) {
+    if (blocks_.empty() || samplesPerBlock_.back() == blockSamples_) {
+        blocks_.emplace_back(layout_.nBins);
+        samplesPerBlock_.push_back(0);
+    }
+    std::vector<BinSums>& block = blocks_.back();
+    const std::vector<double>& r = layout_.axis == 0 ? p.rx : (layout_.axis == 1 ? p.ry : p.rz);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!speciesMask_[p.species[i]]) continue;
+        const int b = layout_.binOf(r[i]);
+        if (b < 0) continue;
+        block[b].add(r[i] - layout_.centre(b), p.vx[i], p.vy[i], p.vz[i]);
+    }
+    ++samplesPerBlock_.back();
+    ++samples_;
+}
+
+BinAccumulator BinAccumulator::fromBlocks(const BinLayout& layout, std::vector<std::uint8_t> speciesMask,
+                                          long blockSamples, std::vector<std::vector<BinSums>> blocks,
+                                          std::vector<long> samplesPerBlock) {
+    BinAccumulator acc(layout, std::move(speciesMask), blockSamples);
+    if (blocks.size() != samplesPerBlock.size()) throw std::invalid_argument("blocks and their sample counts differ in number");
+    acc.blocks_ = std::move(blocks);
+    acc.samplesPerBlock_ = std::move(samplesPerBlock);
+    for (long s : acc.samplesPerBlock_) acc.samples_ += s;
+    return acc;
+}
+
+}  // namespace dpd

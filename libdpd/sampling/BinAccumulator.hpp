@@ -1,0 +1,73 @@
+#pragma once
+// Time-averaged profiles accumulated during a run, so long averages need no stored snapshots.
+//
+// The range [lo, hi) along one axis is cut into bins. Every sample adds, per bin, the particle count
+// and the sums of v, v^2, the offset x from the bin centre, x^2 and v x. The offset sums let the
+// temperature be measured about a mean velocity that varies linearly across the bin, so a sheared
+// flow does not heat the measured kT by (du/dx)^2 (bin width)^2 / 12.
+//
+// Sums are kept in blocks of `blockSamples` samples; the spread of the block means gives honest
+// error bars for correlated data (a block much longer than the correlation time is one independent
+// measurement).
+#include "core/Box.hpp"
+#include "core/Particles.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dpd {
+
+// The sums of one bin over one block of samples.
+struct BinSums {
+    static constexpr int kFields = 12;
+    // count, sum vx vy vz, sum vx^2 vy^2 vz^2, sum x, sum x^2, sum vx x, vy x, vz x
+    std::array<double, kFields> s{};
+    void add(double x, double vx, double vy, double vz) {
+        s[0] += 1.0;
+        s[1] += vx; s[2] += vy; s[3] += vz;
+        s[4] += vx * vx; s[5] += vy * vy; s[6] += vz * vz;
+        s[7] += x; s[8] += x * x;
+        s[9] += vx * x; s[10] += vy * x; s[11] += vz * x;
+    }
+};
+
+struct BinLayout {
+    int axis = 2;
+    int nBins = 1;
+    double lo = 0.0, hi = 1.0;
+    double width() const { return (hi - lo) / nBins; }
+    double centre(int b) const { return lo + (b + 0.5) * width(); }
+    // Bin index, or -1 outside [lo, hi).
+    int binOf(double coordinate) const;
+};
+
+class BinAccumulator {
+public:
+    BinAccumulator() = default;
+    BinAccumulator(const BinLayout& layout, std::vector<std::uint8_t> speciesMask, long blockSamples);
+
+    // Adds one sample of the particles whose species is in the mask.
+    void sample(const Particles& p);
+    const BinLayout& layout() const { return layout_; }
+    long samples() const { return samples_; }
+    long blockSamples() const { return blockSamples_; }
+    // Completed blocks, then the one in progress (if it has samples), each nBins x kFields.
+    const std::vector<std::vector<BinSums>>& blocks() const { return blocks_; }
+    const std::vector<long>& samplesPerBlock() const { return samplesPerBlock_; }
+    const std::vector<std::uint8_t>& speciesMask() const { return speciesMask_; }
+    // Restores an accumulator from stored blocks (restart, post-processing).
+    static BinAccumulator fromBlocks(const BinLayout& layout, std::vector<std::uint8_t> speciesMask, long blockSamples,
+                                     std::vector<std::vector<BinSums>> blocks, std::vector<long> samplesPerBlock);
+
+private:
+    BinLayout layout_;
+    std::vector<std::uint8_t> speciesMask_;
+    long blockSamples_ = 1000;
+    long samples_ = 0;
+    std::vector<std::vector<BinSums>> blocks_;
+    std::vector<long> samplesPerBlock_;
+};
+
+}  // namespace dpd

@@ -1,0 +1,68 @@
+#include "sampling/BinAccumulatorFile.hpp"
+
+#include "core/Error.hpp"
+#include "io/Hdf5File.hpp"
+
+#include <filesystem>
+
+namespace dpd {
+
+void writeBins(const std::string& file, const BinAccumulator& acc, int dimension, double crossSection, double time) {
+    std::filesystem::create_directories(std::filesystem::path(file).parent_path());
+    const auto& blocks = acc.blocks();
+    const int nBins = acc.layout().nBins;
+    std::vector<double> flat;
+    flat.reserve(blocks.size() * nBins * BinSums::kFields);
+    for (const auto& block : blocks)
+        for (const BinSums& b : block) flat.insert(flat.end(), b.s.begin(), b.s.end());
+    std::vector<std::int64_t> perBlock(acc.samplesPerBlock().begin(), acc.samplesPerBlock().end());
+    std::vector<std::int64_t> mask(acc.speciesMask().begin(), acc.speciesMask().end());
+    Hdf5Writer w(file);
+    w.writeDoubles("blocks", flat, {static_cast<hsize_t>(blocks.size()), static_cast<hsize_t>(nBins),
+                                    static_cast<hsize_t>(BinSums::kFields)});
+    w.writeInt64("samplesPerBlock", perBlock, {static_cast<hsize_t>(perBlock.size())});
+    w.writeAttribute("/", "format", "dpdFoamLike-bins-1");
+    w.writeAttribute("/", "axis", acc.layout().axis);
+    w.writeAttribute("/", "nBins", nBins);
+    w.writeAttribute("/", "lo", acc.layout().lo);
+    w.writeAttribute("/", "hi", acc.layout().hi);
+    w.writeAttribute("/", "blockSamples", static_cast<std::int64_t>(acc.blockSamples()));
+    w.writeAttribute("/", "dimension", dimension);
+    w.writeAttribute("/", "crossSection", crossSection);
+    w.writeAttribute("/", "time", time);
+    w.writeAttribute("/", "speciesMask", mask);
+    w.commit();
+}
+
+StoredBins readBins(const std::string& file) {
+    Hdf5Reader r(file);
+    if (!r.hasAttribute("/", "format") || r.attributeString("/", "format") != "dpdFoamLike-bins-1")
+        throw IoError(file + ": not a dpdFoamLike bins file (attribute 'format' missing or different)");
+    BinLayout layout;
+    layout.axis = static_cast<int>(r.attributeInt("/", "axis"));
+    layout.nBins = static_cast<int>(r.attributeInt("/", "nBins"));
+    layout.lo = r.attributeDouble("/", "lo");
+    layout.hi = r.attributeDouble("/", "hi");
+    std::vector<hsize_t> dims;
+    const std::vector<double> flat = r.readDoubles("blocks", &dims);
+    const std::vector<std::int64_t> perBlock = r.readInt64("samplesPerBlock");
+    if (dims.size() != 3 || dims[1] != static_cast<hsize_t>(layout.nBins) || dims[2] != BinSums::kFields ||
+        perBlock.size() != dims[0])
+        throw IoError(file + ": dataset 'blocks' does not have the shape (nBlocks, nBins, 12)");
+    std::vector<std::vector<BinSums>> blocks(dims[0], std::vector<BinSums>(layout.nBins));
+    std::size_t k = 0;
+    for (auto& block : blocks)
+        for (BinSums& b : block)
+            for (double& v : b.s) v = flat[k++];
+    std::vector<std::uint8_t> mask;
+    for (auto m : r.attributeInts("/", "speciesMask")) mask.push_back(static_cast<std::uint8_t>(m));
+    StoredBins out;
+    out.accumulator = BinAccumulator::fromBlocks(layout, mask, r.attributeInt("/", "blockSamples"), std::move(blocks),
+                                                 std::vector<long>(perBlock.begin(), perBlock.end()));
+    out.dimension = static_cast<int>(r.attributeInt("/", "dimension"));
+    out.crossSection = r.attributeDouble("/", "crossSection");
+    out.time = r.attributeDouble("/", "time");
+    return out;
+}
+
+}  // namespace dpd

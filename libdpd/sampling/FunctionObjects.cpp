@@ -1,0 +1,93 @@
+#include "sampling/FunctionObjects.hpp"
+
+#include "io/Dictionary.hpp"
+#include "run/System.hpp"
+#include "sampling/BinAccumulatorFile.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace dpd {
+
+namespace {
+
+int readAxis(const Dictionary& d, const System& sys) {
+    const std::string s = d.get<std::string>("axis");
+    const int axis = s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1;
+    if (axis < 0) d.fail("axis", "expected x, y or z, not '" + s + "'");
+    if (!sys.box.isActiveAxis(axis)) d.fail("axis", "a 2-D scene has no y axis");
+    return axis;
+}
+
+std::vector<std::uint8_t> readSpeciesMask(const Dictionary& d, const System& sys) {
+    std::vector<std::uint8_t> mask(sys.species.size(), 0);
+    if (!d.found("species")) {
+        for (int s = 0; s < sys.species.size(); ++s) mask[s] = sys.species[s].frozen ? 0 : 1;
+        return mask;
+    }
+    for (const std::string& name : d.get<std::vector<std::string>>("species")) {
+        const int idx = sys.species.indexOf(name);
+        if (idx < 0) d.fail("species", "unknown species '" + name + "'");
+        mask[idx] = 1;
+    }
+    return mask;
+}
+
+BinnedProfileFunction readBinnedProfile(const Dictionary& d, const std::string& name, const System& sys) {
+    d.checkKeys({"type", "axis", "nBins", "min", "max", "species", "startTime", "sampleInterval", "samplesPerBlock"});
+    BinLayout layout;
+    layout.axis = readAxis(d, sys);
+    layout.nBins = d.getPositive<int>("nBins");
+    layout.lo = d.getOrDefault<double>("min", sys.box.lo[layout.axis]);
+    layout.hi = d.getOrDefault<double>("max", sys.box.hi[layout.axis]);
+    if (!(layout.hi > layout.lo)) d.fail("max", "must be greater than min");
+    BinnedProfileFunction f;
+    f.name = name;
+    f.startTime = d.getOrDefault<double>("startTime", 0.0);
+    f.sampleInterval = d.found("sampleInterval") ? d.getPositive<long>("sampleInterval") : 1;
+    const long perBlock = d.found("samplesPerBlock") ? d.getPositive<long>("samplesPerBlock") : 1000;
+    f.accumulator = BinAccumulator(layout, readSpeciesMask(d, sys), perBlock);
+    f.crossSection = sys.box.volume() / sys.box.length()[layout.axis];
+    return f;
+}
+
+}  // namespace
+
+FunctionObjects FunctionObjects::read(const Dictionary& functions, const System& sys) {
+    FunctionObjects out;
+    for (const std::string& name : functions.keys()) {
+        if (!functions.isDict(name)) functions.fail(name, "each function object is a sub-dictionary");
+        const Dictionary& d = functions.subDict(name);
+        const std::string type = d.get<std::string>("type");
+        if (type != "binnedProfile") d.fail("type", "unknown function object type '" + type + "' (expected binnedProfile)");
+        out.profiles_.push_back(readBinnedProfile(d, name, sys));
+    }
+    return out;
+}
+
+void FunctionObjects::execute(const System& sys) {
+    for (auto& f : profiles_) {
+        if (sys.time < f.startTime - 1e-9 * sys.dt()) continue;
+        if (sys.step % f.sampleInterval != 0) continue;
+        f.accumulator.sample(sys.particles);
+    }
+}
+
+void FunctionObjects::write(const std::string& timeDir, const System& sys) const {
+    for (const auto& f : profiles_) {
+        if (f.accumulator.samples() == 0) continue;
+        const std::string file = (std::filesystem::path(timeDir) / "sampling" / (f.name + ".h5")).string();
+        writeBins(file, f.accumulator, sys.box.dimension, f.crossSection, sys.time);
+    }
+}
+
+void FunctionObjects::restore(const std::string& timeDir) {
+    for (auto& f : profiles_) {
+        const auto file = std::filesystem::path(timeDir) / "sampling" / (f.name + ".h5");
+        if (!std::filesystem::exists(file)) continue;
+        StoredBins stored = readBins(file.string());
+        f.accumulator = std::move(stored.accumulator);
+    }
+}
+
+}  // namespace dpd

@@ -1,0 +1,54 @@
+#pragma once
+// Run-time sampling declared in controlDict's `functions`, as OpenFOAM users declare function
+// objects. One type so far:
+//
+//   channelProfile
+//   {
+//       type            binnedProfile;
+//       axis            z;
+//       nBins           80;
+//       min             -20;        // default: the box
+//       max             20;
+//       species         (fluid);    // default: every species that is not frozen
+//       startTime       100;        // samples from this time on (let the flow develop first)
+//       sampleInterval  1;          // steps between samples
+//       samplesPerBlock 1000;       // samples per block, for the error bars
+//   }
+//
+// At every write time the sums go to <time>/sampling/<name>.h5 (see BinAccumulatorFile.hpp), which
+// profileBins turns into profiles.
+#include "sampling/BinAccumulator.hpp"
+
+#include <string>
+#include <vector>
+
+namespace dpd {
+
+class Dictionary;
+class System;
+
+struct BinnedProfileFunction {
+    std::string name;
+    BinAccumulator accumulator;
+    double startTime = 0.0;
+    long sampleInterval = 1;
+    double crossSection = 1.0;
+};
+
+class FunctionObjects {
+public:
+    // Reads and checks every entry; errors name controlDict, the line and the keyword.
+    static FunctionObjects read(const Dictionary& functions, const System& sys);
+    // Samples whatever is due after the step the system has just made.
+    void execute(const System& sys);
+    // Writes every accumulator under <timeDir>/sampling/.
+    void write(const std::string& timeDir, const System& sys) const;
+    // Carries sums accumulated before a restart on from <timeDir>/sampling/ (missing files are fine).
+    void restore(const std::string& timeDir);
+    std::size_t size() const { return profiles_.size(); }
+
+private:
+    std::vector<BinnedProfileFunction> profiles_;
+};
+
+}  // namespace dpd

@@ -1,0 +1,118 @@
+#include "walls/BlockFrozenWall.hpp"
+
+#include "io/Dictionary.hpp"
+#include "run/DpdProperties.hpp"
+#include "run/InitialConditions.hpp"
+#include "walls/FrozenLattice.hpp"
+
+#include <cmath>
+
+namespace dpd {
+
+namespace {
+
+Box readBox(const Dictionary& d, int dimension, double cutoff) {
+    const Dictionary& bd = d.subDict("box");
+    bd.checkKeys({"min", "max"});
+    Box box;
+    box.dimension = dimension;
+    box.lo = bd.get<Eigen::Vector3d>("min");
+    box.hi = bd.get<Eigen::Vector3d>("max");
+    if (dimension == 2) { box.lo.y() = -0.5; box.hi.y() = 0.5; }  // nominal: the y axis is inactive
+    for (int a = 0; a < 3; ++a) {
+        if (!box.isActiveAxis(a)) continue;
+        if (box.hi[a] - box.lo[a] < 3.0 * cutoff)
+            bd.fail("max", std::string("the box must be at least three cutoffs long along ") + "xyz"[a]);
+    }
+    return box;
+}
+
+int speciesIndex(const Dictionary& d, const DpdModel& model, bool wantFrozen) {
+    const std::string name = d.get<std::string>("species");
+    const int idx = model.species.indexOf(name);
+    if (idx < 0) d.fail("species", "species '" + name + "' is not defined in constant/dpdProperties");
+    if (model.species[idx].frozen != wantFrozen)
+        d.fail("species", "species '" + name + (wantFrozen ? "' must be frozen" : "' must not be frozen"));
+    return idx;
+}
+
+FrozenLatticeSettings readLattice(const Dictionary& wd, const DpdModel& model) {
+    wd.checkKeys({"species", "lattice", "density", "thickness", "layers", "spacing"});
+    FrozenLatticeSettings s;
+    s.lattice = wd.get<std::string>("lattice");
+    if (s.lattice != "fcc" && s.lattice != "simpleCubic" && s.lattice != "layers")
+        wd.fail("lattice", "expected fcc, simpleCubic or layers");
+    if (s.lattice != "layers") s.density = wd.getPositive<double>("density");
+    s.thickness = wd.found("thickness") ? wd.getPositive<double>("thickness") : model.cutoff;
+    if (s.lattice == "layers") {
+        s.layerDepths = wd.get<std::vector<double>>("layers");
+        s.layerSpacing = wd.get<std::vector<double>>("spacing");
+    }
+    return s;
+}
+
+// The solid behind each wall must be at least one cutoff deep (through the periodic boundary), or
+// fluid on one side would feel the fluid on the other.
+void checkSolidDepth(const Dictionary& d, const Box& box, const DpdModel& model) {
+    for (const auto& w : model.walls.walls()) {
+        Eigen::Vector3d probe = w.point - w.normal * model.cutoff * 0.999;
+        for (int a = 0; a < 3; ++a)
+            if (box.isActiveAxis(a)) probe[a] = box.wrap(probe[a], a);
+        bool behind = false;
+        for (const auto& other : model.walls.walls())
+            behind = behind || other.signedDistance(probe.x(), probe.y(), probe.z()) < 0.0;
+        if (!behind)
+            d.fail("box", "the solid behind wall '" + w.name + "' is thinner than one cutoff: enlarge the box along the wall normal");
+    }
+}
+
+}  // namespace
+
+Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockFrozenWallReport& report) {
+    d.checkKeys({"box", "fluid", "wall"});
+    Snapshot snap;
+    snap.box = readBox(d, model.dimension, model.cutoff);
+    for (int s = 0; s < model.species.size(); ++s) {
+        snap.speciesNames.push_back(model.species[s].name);
+        snap.speciesFrozen.push_back(model.species[s].frozen);
+    }
+    for (const auto& w : model.walls.walls())
+        for (int a = 0; a < 3; ++a)
+            if (snap.box.isActiveAxis(a) && (w.point[a] < snap.box.lo[a] || w.point[a] > snap.box.hi[a]))
+                d.fail("box", "wall '" + w.name + "' of constant/dpdProperties lies outside the box");
+    checkSolidDepth(d, snap.box, model);
+
+    const Dictionary& fd = d.subDict("fluid");
+    fd.checkKeys({"species", "density"});
+    const int fluidSpecies = speciesIndex(fd, model, false);
+    const double density = fd.getPositive<double>("density");
+    const PairRandom random(model.seed);
+    const WallSet& walls = model.walls;
+    report.fluid = fillRandom(snap.particles, snap.box, snap.box.lo, snap.box.hi, density, fluidSpecies,
+                              [&](double x, double y, double z) { return !walls.isInsideSolid(x, y, z); }, random, 0);
+    report.fluidVolume = report.fluid / density;
+    maxwellVelocities(snap.particles, 0, report.fluid, model.dimension, model.kT, random);
+
+    if (!walls.empty()) {
+        if (!d.found("wall")) d.fail("wall", "constant/dpdProperties has walls: say how to build them");
+        const Dictionary& wd = d.subDict("wall");
+        const int wallSpecies = speciesIndex(wd, model, true);
+        const FrozenLatticeSettings lattice = readLattice(wd, model);
+        for (const auto& w : walls.walls()) {
+            std::vector<Eigen::Vector3d> points;
+            try {
+                points = frozenLattice(snap.box, w, lattice);
+            } catch (const std::invalid_argument& e) {
+                wd.fail("lattice", e.what());
+            }
+            for (const auto& r : points)
+                snap.particles.add(snap.particles.size(), wallSpecies, r.x(), r.y(), r.z(), w.velocity.x(),
+                                   w.velocity.y(), w.velocity.z());
+            report.frozenPerWall.push_back(points.size());
+            report.wallNames.push_back(w.name);
+        }
+    }
+    return snap;
+}
+
+}  // namespace dpd

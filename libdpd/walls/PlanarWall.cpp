@@ -1,0 +1,33 @@
+#include "walls/PlanarWall.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dpd {
+
+ReflectionRule reflectionRuleFromName(const std::string& name) {
+    if (name == "none") return ReflectionRule::none;
+    if (name == "specular") return ReflectionRule::specular;
+    if (name == "bounceBack") return ReflectionRule::bounceBack;
+    if (name == "maxwellian") return ReflectionRule::maxwellian;
+    throw std::invalid_argument("unknown reflection rule '" + name +
+                                "' (expected none, specular, bounceBack or maxwellian)");
+}
+
+std::string reflectionRuleName(ReflectionRule rule) {
+    switch (rule) {
+        case ReflectionRule::none: return "none";
+        case ReflectionRule::specular: return "specular";
+        case ReflectionRule::bounceBack: return "bounceBack";
+        case ReflectionRule::maxwellian: return "maxwellian";
+    }
+    return "unknown";
+}
+
+int PlanarWall::normalAxis() const {
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(std::abs(normal[a]) - 1.0) < 1e-12) return a;
+    return -1;
+}
+
+}  // namespace dpd
