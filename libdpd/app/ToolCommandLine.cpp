@@ -22,7 +22,7 @@ bool ToolCommandLine::parse(int argc, char** argv) {
     try {
         // OpenFOAM users write -case and -latestTime with one dash; both forms are accepted.
         const int style = po::command_line_style::default_style | po::command_line_style::allow_long_disguise;
-        po::store(po::command_line_parser(argc, argv).options(options_).style(style).run(), vm_);
+        po::store(po::command_line_parser(argc, argv).options(options_).positional(positional_).style(style).run(), vm_);
         if (vm_.count("help")) {
             std::cout << options_ << "\n";
             return false;

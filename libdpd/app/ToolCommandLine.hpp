@@ -16,6 +16,8 @@ public:
     ToolCommandLine(std::string toolName, std::string description, bool readsTimes);
     // Add tool-specific options here before parse().
     boost::program_options::options_description_easy_init addOptions() { return options_.add_options(); }
+    // A bare argument (like foamDictionary's file name) fills this option.
+    void setPositional(const std::string& option) { positional_.add(option.c_str(), 1); }
     // Returns false when -help was asked for (the help is printed); throws std::invalid_argument for
     // bad options.
     bool parse(int argc, char** argv);
@@ -28,6 +30,7 @@ public:
 private:
     std::string tool_;
     boost::program_options::options_description options_;
+    boost::program_options::positional_options_description positional_;
     boost::program_options::variables_map vm_;
     std::string caseDir_ = ".";
     std::string time_;

@@ -19,9 +19,11 @@ WallCounters EulerIntegrator::step(System& sys) {
         p.vy[i] += dt * p.fy[i];
         p.vz[i] += dt * p.fz[i];
     }
-    sys.wrapPositions();
     sys.advanceClock();
+    // Reflect before wrapping: a particle that crossed a wall lying on a box face must be mirrored
+    // back, not carried round to the far side of the box.
     const WallCounters walls = sys.applyWalls();
+    sys.wrapPositions();
     sys.sortByCell();
     sys.computeForces();
     return walls;

@@ -23,9 +23,11 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         p.ry[i] += dt * p.vy[i];
         p.rz[i] += dt * p.vz[i];
     }
-    sys.wrapPositions();
     sys.advanceClock();
+    // Reflect before wrapping: a particle that crossed a wall lying on a box face must be mirrored
+    // back, not carried round to the far side of the box.
     const WallCounters walls = sys.applyWalls();
+    sys.wrapPositions();
     sys.sortByCell();
     // Keep v + dt f / 2 aside and predict v~ = v + lambda dt f = (v + dt f / 2) + (lambda - 1/2) dt f.
     hx_.resize(n); hy_.resize(n); hz_.resize(n);

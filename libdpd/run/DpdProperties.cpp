@@ -190,6 +190,10 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
         for (int a = 0; a < 3; ++a)
             if (sys.box.isActiveAxis(a) && (w.point[a] < sys.box.lo[a] || w.point[a] > sys.box.hi[a]))
                 throw IoError("constant/dpdProperties: wall '" + w.name + "' has its point outside the box of " + snapshotFile);
+    const std::string thin = model.walls.thinWall(sys.box, model.cutoff);
+    if (!thin.empty())
+        throw IoError("constant/dpdProperties: the solid behind wall '" + thin + "' is thinner than one cutoff inside the box of " +
+                      snapshotFile + " (fluid would interact through the wall across the periodic boundary)");
     sys.initialise();
     return sys;
 }

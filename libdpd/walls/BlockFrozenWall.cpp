@@ -51,21 +51,6 @@ FrozenLatticeSettings readLattice(const Dictionary& wd, const DpdModel& model) {
     return s;
 }
 
-// The solid behind each wall must be at least one cutoff deep (through the periodic boundary), or
-// fluid on one side would feel the fluid on the other.
-void checkSolidDepth(const Dictionary& d, const Box& box, const DpdModel& model) {
-    for (const auto& w : model.walls.walls()) {
-        Eigen::Vector3d probe = w.point - w.normal * model.cutoff * 0.999;
-        for (int a = 0; a < 3; ++a)
-            if (box.isActiveAxis(a)) probe[a] = box.wrap(probe[a], a);
-        bool behind = false;
-        for (const auto& other : model.walls.walls())
-            behind = behind || other.signedDistance(probe.x(), probe.y(), probe.z()) < 0.0;
-        if (!behind)
-            d.fail("box", "the solid behind wall '" + w.name + "' is thinner than one cutoff: enlarge the box along the wall normal");
-    }
-}
-
 }  // namespace
 
 Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockFrozenWallReport& report) {
@@ -80,7 +65,10 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
         for (int a = 0; a < 3; ++a)
             if (snap.box.isActiveAxis(a) && (w.point[a] < snap.box.lo[a] || w.point[a] > snap.box.hi[a]))
                 d.fail("box", "wall '" + w.name + "' of constant/dpdProperties lies outside the box");
-    checkSolidDepth(d, snap.box, model);
+    const std::string thin = model.walls.thinWall(snap.box, model.cutoff);
+    if (!thin.empty())
+        d.fail("box", "the solid behind wall '" + thin +
+                          "' is thinner than one cutoff inside the box: enlarge the box along the wall normal");
 
     const Dictionary& fd = d.subDict("fluid");
     fd.checkKeys({"species", "density"});

@@ -44,6 +44,21 @@ void reflectOne(const PlanarWall& w, double depth, Particles& p, std::size_t i, 
 
 }  // namespace
 
+std::string WallSet::thinWall(const Box& box, double depth) const {
+    for (const auto& w : walls_) {
+        // Probe just short of `depth` behind the plane, wrapped into the box: it must still be solid.
+        Eigen::Vector3d probe = w.point - w.normal * depth * 0.999;
+        for (int a = 0; a < 3; ++a)
+            if (box.isActiveAxis(a)) probe[a] = box.wrap(probe[a], a);
+        if (!isInsideSolid(probe.x(), probe.y(), probe.z())) return w.name;
+        // The plane itself must lie inside the box, not on a face: the solid behind a face wall
+        // would be the fluid at the far side of the periodic box.
+        const int axis = w.normalAxis();
+        if (axis >= 0 && (w.point[axis] <= box.lo[axis] || w.point[axis] >= box.hi[axis])) return w.name;
+    }
+    return {};
+}
+
 bool WallSet::isInsideSolid(double x, double y, double z) const {
     for (const auto& w : walls_)
         if (w.signedDistance(x, y, z) < 0.0) return true;

@@ -6,6 +6,7 @@
 #include "walls/PlanarWall.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace dpd {
@@ -23,6 +24,10 @@ public:
     const PlanarWall& operator[](std::size_t i) const { return walls_[i]; }
     const std::vector<PlanarWall>& walls() const { return walls_; }
 
+    // The name of the first wall whose solid, within the periodic box, is less than `depth` thick
+    // (fluid on one side would then feel the fluid on the other side through the wall); empty if
+    // every wall is thick enough.
+    std::string thinWall(const Box& box, double depth) const;
     // True if the point is behind any wall (inside the solid).
     bool isInsideSolid(double x, double y, double z) const;
     // Reflect every mobile particle found behind a wall. Random draws are keyed by (seed, step, id),

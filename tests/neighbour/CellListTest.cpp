@@ -1,0 +1,238 @@
+// The cell list and the slab-coloured pair loop visit every pair within the cutoff exactly once,
+// compared with a brute-force O(N^2) minimum-image search (neighbour/CellList.*, forces/PairForceLoop.*).
+//
+// Two checks per box:
+//  1. A recording evaluator (same interface as DpdPairEvaluator) stores, for every call, the squared
+//     distance and the pair's noise value zeta = pairUniform(step, id_i, id_j); the noise value is a
+//     32-bit fingerprint of the unordered pair, so the sorted list of (zeta, r^2) records is the
+//     multiset of visited pairs. It must equal the brute-force list: same length (nothing missed,
+//     nothing twice), same fingerprints, same distances to round-off.
+//  2. Full DPD forces (conservative, dissipative and random terms) from the loop against the same
+//     evaluator applied to the brute-force pair list, particle by particle.
+#include "core/Box.hpp"
+#include "core/Particles.hpp"
+#include "core/Species.hpp"
+#include "forces/DpdPairForce.hpp"
+#include "forces/PairForceLoop.hpp"
+#include "neighbour/CellList.hpp"
+#include "random/PairRandom.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+using namespace dpd;
+
+namespace {
+
+struct PairRecord {
+    double zeta;
+    double r2;
+    bool operator<(const PairRecord& o) const { return std::tie(zeta, r2) < std::tie(o.zeta, o.r2); }
+};
+
+// Records every pair the loop evaluates, one list per thread (the loop runs in parallel).
+struct RecordingEvaluator {
+    std::vector<std::vector<PairRecord>>* perThread;
+    inline double forceOverR(double r2, double /*rDotV*/, const PairCoeffs& /*c*/, double zeta) const {
+        (*perThread)[omp_get_thread_num()].push_back({zeta, r2});
+        return 0.0;
+    }
+};
+
+// Random particles in a box (uniform, ids in a shuffled order so that cell sorting really permutes),
+// plus a few on the faces: exactly at lo, and just below hi.
+Particles randomParticles(const Box& box, double density, std::uint64_t seed) {
+    const PairRandom rng(seed);
+    const std::size_t n = static_cast<std::size_t>(std::llround(density * box.volume()));
+    Particles p;
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto u = rng.particleUniforms(0, k, kStreamInitialPosition);
+        const auto g = rng.particleGaussians(0, k, kStreamInitialVelocity);
+        Eigen::Vector3d r;
+        for (int a = 0; a < 3; ++a) r[a] = box.lo[a] + u[a] * box.length()[a];
+        if (box.dimension == 2) r.y() = 0.5 * (box.lo.y() + box.hi.y());
+        p.add((k * 7919) % 1000003 + 5, 0, r.x(), r.y(), r.z(), g[0], box.dimension == 3 ? g[1] : 0.0, g[2]);
+    }
+    // Particles on the faces of the box and in its corner: one exactly at lo, one a rounding step below
+    // hi and shifted by 0.37 along the other active axes (so the two are 0.37 or 0.52 apart across the
+    // periodic boundary, never on top of each other).
+    std::uint64_t extraId = 2000000;
+    for (int a = 0; a < 3; ++a) {
+        if (!box.isActiveAxis(a)) continue;
+        Eigen::Vector3d r = 0.5 * (box.lo + box.hi);
+        r[a] = box.lo[a];
+        p.add(extraId++, 0, r.x(), r.y(), r.z());
+        for (int b = 0; b < 3; ++b)
+            if (b != a && box.isActiveAxis(b)) r[b] += 0.37;
+        r[a] = std::nextafter(box.hi[a], box.lo[a]);
+        p.add(extraId++, 0, r.x(), r.y(), r.z());
+    }
+    const Eigen::Vector3d corner = box.dimension == 3 ? box.lo : Eigen::Vector3d(box.lo.x(), 0.5 * (box.lo.y() + box.hi.y()), box.lo.z());
+    p.add(extraId++, 0, corner.x(), corner.y(), corner.z());
+    return p;
+}
+
+struct BrutePair {
+    std::size_t i, j;
+    Eigen::Vector3d rij;  // minimum image r_i - r_j
+};
+
+std::vector<BrutePair> bruteForcePairs(const Particles& p, const Box& box, double cutoff) {
+    std::vector<BrutePair> out;
+    const Eigen::Vector3d L = box.length();
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = i + 1; j < p.size(); ++j) {
+            Eigen::Vector3d d(p.rx[i] - p.rx[j], p.ry[i] - p.ry[j], p.rz[i] - p.rz[j]);
+            for (int a = 0; a < 3; ++a)
+                if (box.isActiveAxis(a)) d[a] -= L[a] * std::round(d[a] / L[a]);
+                else d[a] = 0.0;
+            if (d.squaredNorm() < cutoff * cutoff) out.push_back({i, j, d});
+        }
+    return out;
+}
+
+struct Case {
+    const char* name;
+    int dimension;
+    Eigen::Vector3d lo, hi;
+    double cutoff;
+};
+
+void checkCase(const Case& cs) {
+    SCOPED_TRACE(cs.name);
+    Box box;
+    box.dimension = cs.dimension;
+    box.lo = cs.lo;
+    box.hi = cs.hi;
+    Particles p = randomParticles(box, 3.0 / std::pow(cs.cutoff, cs.dimension), 31 + cs.dimension);
+    CellList cells;
+    cells.setup(box, cs.cutoff);
+    const auto n = cells.cellsPerAxis();
+    for (int a = 0; a < 3; ++a) {
+        if (!box.isActiveAxis(a)) { EXPECT_EQ(n[a], 1); continue; }
+        EXPECT_EQ(n[a], static_cast<int>(std::floor(box.length()[a] / cs.cutoff)));
+        EXPECT_GE(cells.cellSize()[a], cs.cutoff);
+    }
+    cells.sortParticles(p);
+
+    // The sort keeps every particle (a permutation of the ids) and puts each in the cell that holds it.
+    ASSERT_EQ(cells.cellStart(cells.numCells()), p.size());
+    for (int c = 0; c < cells.numCells(); ++c) {
+        const int ix = c / (n[1] * n[2]), iy = (c / n[2]) % n[1], iz = c % n[2];
+        const int idx[3] = {ix, iy, iz};
+        for (std::uint32_t k = cells.cellStart(c); k < cells.cellStart(c + 1); ++k) {
+            const double r[3] = {p.rx[k], p.ry[k], p.rz[k]};
+            for (int a = 0; a < 3; ++a) {
+                if (!box.isActiveAxis(a)) continue;
+                const double lower = box.lo[a] + idx[a] * cells.cellSize()[a];
+                const double upper = box.lo[a] + (idx[a] + 1) * cells.cellSize()[a];
+                EXPECT_GE(r[a], lower - 1e-12 * box.length()[a]);
+                EXPECT_LE(r[a], upper + 1e-12 * box.length()[a]);
+            }
+        }
+    }
+
+    const PairRandom random(4242);
+    PairTable table(1);
+    table.set(0, 0, {25.0, 4.5, 3.0, true});
+    const std::uint64_t step = 17;
+    const PairLoopContext ctx{cells, table, random, step};
+
+    // 1. The visited pairs.
+    std::vector<std::vector<PairRecord>> perThread(omp_get_max_threads());
+    accumulatePairForces(p, ctx, RecordingEvaluator{&perThread}, cs.cutoff);
+    std::vector<PairRecord> visited;
+    for (const auto& v : perThread) visited.insert(visited.end(), v.begin(), v.end());
+    const std::vector<BrutePair> brute = bruteForcePairs(p, box, cs.cutoff);
+    std::vector<PairRecord> expected;
+    for (const auto& b : brute) {
+        expected.push_back({random.pairUniform(step, p.id[b.i], p.id[b.j]), b.rij.squaredNorm()});
+        // A pair within round-off of the cutoff could fall either way; the fixed seed has none.
+        ASSERT_GT(std::abs(b.rij.squaredNorm() - cs.cutoff * cs.cutoff), 1e-9);
+    }
+    ASSERT_GT(expected.size(), 100u);  // the boxes hold enough pairs for the check to mean something
+    std::sort(visited.begin(), visited.end());
+    std::sort(expected.begin(), expected.end());
+    ASSERT_EQ(visited.size(), expected.size()) << "pairs visited by the loop vs brute force";
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+        ASSERT_EQ(visited[k].zeta, expected[k].zeta) << "pair " << k;
+        ASSERT_NEAR(visited[k].r2, expected[k].r2, 1e-12) << "pair " << k;
+    }
+
+    // 2. Full DPD forces against the brute-force sum of the same evaluator.
+    PairForceParameters params;
+    params.cutoff = cs.cutoff;
+    params.dt = 0.04;
+    const DpdPairEvaluator<true, true> eval(params);
+    p.clearForces();
+    accumulatePairForces(p, ctx, eval, cs.cutoff);
+    std::vector<Eigen::Vector3d> f(p.size(), Eigen::Vector3d::Zero());
+    for (const auto& b : brute) {
+        const Eigen::Vector3d dv(p.vx[b.i] - p.vx[b.j], p.vy[b.i] - p.vy[b.j], p.vz[b.i] - p.vz[b.j]);
+        const double s = eval.forceOverR(b.rij.squaredNorm(), b.rij.dot(dv), table(0, 0),
+                                         random.pairUniform(step, p.id[b.i], p.id[b.j]));
+        f[b.i] += s * b.rij;
+        f[b.j] -= s * b.rij;
+    }
+    // Round-off: about 10 pair terms per particle, each up to ~|a| + gamma |v| + sigma sqrt(3/dt) ~ 60,
+    // summed in a different order: differences of order 1e-13; 1e-9 leaves room and still catches any
+    // missing or doubled pair (each contributes order 1-10).
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        EXPECT_NEAR(p.fx[i], f[i].x(), 1e-9) << "particle id " << p.id[i];
+        EXPECT_NEAR(p.fy[i], f[i].y(), 1e-9) << "particle id " << p.id[i];
+        EXPECT_NEAR(p.fz[i], f[i].z(), 1e-9) << "particle id " << p.id[i];
+    }
+}
+
+}  // namespace
+
+TEST(CellList, PairsMatchBruteForce3DMinimumCells) {
+    // 3 cells along x (the minimum) and y, 5 along z; lengths not multiples of the cutoff.
+    checkCase({"3x3x5 cells", 3, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3.4, 3.7, 5.5), 1.0});
+}
+
+TEST(CellList, PairsMatchBruteForce3DOddAndEvenCounts) {
+    // 7 x 4 x 6 cells, a box not at the origin.
+    checkCase({"7x4x6 cells", 3, Eigen::Vector3d(-2.3, 1.1, 0.5), Eigen::Vector3d(5.05, 5.35, 6.9), 1.0});
+    // A cutoff other than 1: floor(L / 0.8) gives 4 x 3 x 3 cells of 0.8625 x 0.833 x 0.87.
+    checkCase({"cutoff 0.8", 3, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3.45, 2.5, 2.61), 0.8});
+}
+
+TEST(CellList, PairsMatchBruteForce2D) {
+    // 2-D (x-z plane): 3 x 4 cells, then 9 x 3 cells.
+    checkCase({"2-D 3x4 cells", 2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3.5, 1.0, 4.4), 1.0});
+    checkCase({"2-D 9x3 cells", 2, Eigen::Vector3d(1.0, -0.5, -3.0), Eigen::Vector3d(10.7, 0.5, 0.2), 1.0});
+}
+
+TEST(CellList, SetupThrowsForBoxesShorterThanThreeCutoffs) {
+    CellList cells;
+    Box box;
+    box.lo = Eigen::Vector3d(0, 0, 0);
+    box.hi = Eigen::Vector3d(2.99, 5, 5);
+    EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
+    box.hi = Eigen::Vector3d(5, 2.99, 5);
+    EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
+    box.hi = Eigen::Vector3d(5, 5, 2.99);
+    EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
+    box.hi = Eigen::Vector3d(5, 5, 5);
+    EXPECT_THROW(cells.setup(box, 1.7), std::invalid_argument);  // 5 / 1.7 < 3
+    EXPECT_NO_THROW(cells.setup(box, 1.6));
+    box.hi = Eigen::Vector3d(3, 3, 3);
+    EXPECT_NO_THROW(cells.setup(box, 1.0));  // exactly three cutoffs is allowed
+    // 2-D: y is inactive and may be thin; x and z still need three cutoffs.
+    box.dimension = 2;
+    box.hi = Eigen::Vector3d(5, 0.1, 5);
+    EXPECT_NO_THROW(cells.setup(box, 1.0));
+    EXPECT_EQ(cells.cellsPerAxis()[1], 1);
+    box.hi = Eigen::Vector3d(5, 1, 2.5);
+    EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
+    box.hi = Eigen::Vector3d(2.5, 1, 5);
+    EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
+}
