@@ -1,5 +1,7 @@
 #include "io/Dictionary.hpp"
 
+#include "io/AtomicFile.hpp"
+
 #include "core/Error.hpp"
 #include "io/DictionaryLexer.hpp"
 
@@ -870,24 +872,7 @@ const char* const kFileFooter = "\n// ******************************************
 void writeDictionaryFile(const std::string& path, const Dictionary& dict) {
     namespace fs = std::filesystem;
     const std::string text = fileHeader(dict, fs::path(path).filename().string()) + dict.toString() + kFileFooter;
-    const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid()));
-    std::error_code ignored;
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw IoError("cannot write '" + path + "': cannot create '" + tmp + "'");
-        out << text;
-        out.close();
-        if (!out) {
-            fs::remove(tmp, ignored);
-            throw IoError("cannot write '" + path + "': writing '" + tmp + "' failed");
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ignored);
-        throw IoError("cannot write '" + path + "': " + ec.message());
-    }
+    writeTextFileAtomically(path, text);
 }
 
 }  // namespace dpd

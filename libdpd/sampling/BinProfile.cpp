@@ -1,4 +1,5 @@
 #include "sampling/BinProfile.hpp"
+#include "sampling/BlockStatistics.hpp"
 
 #include <cmath>
 
@@ -34,17 +35,6 @@ BinEstimate estimate(const BinSums& b, long samples, double binMeasure, int dime
     return e;
 }
 
-double standardError(const std::vector<double>& values) {
-    const std::size_t m = values.size();
-    if (m < 2) return 0.0;
-    double mean = 0.0;
-    for (double v : values) mean += v;
-    mean /= m;
-    double var = 0.0;
-    for (double v : values) var += (v - mean) * (v - mean);
-    return std::sqrt(var / (m - 1) / m);
-}
-
 }  // namespace
 
 BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int dimension) {
@@ -73,11 +63,11 @@ BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int di
         out.centre.push_back(L.centre(b));
         out.count.push_back(total.s[0]);
         out.density.push_back(e.density);
-        out.densityErr.push_back(standardError(rho));
+        out.densityErr.push_back(standardErrorOfMean(rho));
         out.ux.push_back(e.ux); out.uy.push_back(e.uy); out.uz.push_back(e.uz);
-        out.uxErr.push_back(standardError(ux)); out.uyErr.push_back(standardError(uy)); out.uzErr.push_back(standardError(uz));
+        out.uxErr.push_back(standardErrorOfMean(ux)); out.uyErr.push_back(standardErrorOfMean(uy)); out.uzErr.push_back(standardErrorOfMean(uz));
         out.kT.push_back(e.kT);
-        out.kTErr.push_back(standardError(kT));
+        out.kTErr.push_back(standardErrorOfMean(kT));
     }
     return out;
 }

@@ -1,4 +1,5 @@
 #include "sampling/ProfileBinsTool.hpp"
+#include "sampling/BlockStatistics.hpp"
 
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
@@ -50,17 +51,6 @@ Means centralMeans(const BinProfile& p, const std::vector<std::size_t>& bins) {
     m.kTValid = weight > 0.0;
     m.kT = m.kTValid ? m.kT / weight : 0.0;
     return m;
-}
-
-double standardError(const std::vector<double>& v) {
-    const std::size_t m = v.size();
-    if (m < 2) return 0.0;
-    double mean = 0.0;
-    for (double x : v) mean += x;
-    mean /= static_cast<double>(m);
-    double var = 0.0;
-    for (double x : v) var += (x - mean) * (x - mean);
-    return std::sqrt(var / static_cast<double>(m - 1) / static_cast<double>(m));
 }
 
 std::vector<std::string> samplingFiles(const fs::path& timeDir) {
@@ -126,8 +116,8 @@ ProfileSummary summariseBins(const StoredBins& bins, double margin) {
         density.push_back(m.density);
         if (m.kTValid) kT.push_back(m.kT);
     }
-    s.densityErr = standardError(density);
-    s.kTErr = standardError(kT);
+    s.densityErr = standardErrorOfMean(density);
+    s.kTErr = standardErrorOfMean(kT);
     return s;
 }
 

@@ -1,5 +1,7 @@
 #include "sampling/ProfileTable.hpp"
 
+#include "io/AtomicFile.hpp"
+
 #include "core/Error.hpp"
 
 #include <cerrno>
@@ -87,27 +89,7 @@ void writeProfileTable(const std::string& path, const std::string& axisName, con
         text += "\n";
     }
 
-    const fs::path target(path);
-    std::error_code ec;
-    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    if (ec) throw IoError("cannot write '" + path + "': cannot create its directory: " + ec.message());
-    const std::string tmp = path + ".tmp" + std::to_string(static_cast<long>(::getpid()));
-    std::error_code ignored;
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw IoError("cannot write '" + path + "': cannot create '" + tmp + "'");
-        out << text;
-        out.close();
-        if (!out) {
-            fs::remove(tmp, ignored);
-            throw IoError("cannot write '" + path + "': writing '" + tmp + "' failed");
-        }
-    }
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        fs::remove(tmp, ignored);
-        throw IoError("cannot write '" + path + "': " + ec.message());
-    }
+    writeTextFileAtomically(path, text, true);
 }
 
 ProfileTableData readProfileTable(const std::string& path) {
