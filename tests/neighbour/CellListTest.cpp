@@ -105,7 +105,7 @@ struct Case {
     double cutoff;
 };
 
-void checkCase(const Case& cs) {
+void checkCaseOnThreads(const Case& cs) {
     SCOPED_TRACE(cs.name);
     Box box;
     box.dimension = cs.dimension;
@@ -189,6 +189,18 @@ void checkCase(const Case& cs) {
         EXPECT_NEAR(p.fy[i], f[i].y(), 1e-9) << "particle id " << p.id[i];
         EXPECT_NEAR(p.fz[i], f[i].z(), 1e-9) << "particle id " << p.id[i];
     }
+}
+
+// On one thread and on two (ctest runs each test with one OpenMP thread; the slab colouring only
+// matters with more).
+void checkCase(const Case& cs) {
+    const int saved = omp_get_max_threads();
+    for (int threads : {1, 2}) {
+        SCOPED_TRACE(threads == 1 ? "1 thread" : "2 threads");
+        omp_set_num_threads(threads);
+        checkCaseOnThreads(cs);
+    }
+    omp_set_num_threads(saved);
 }
 
 }  // namespace
