@@ -43,7 +43,7 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
     sys.computeForces();
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
-        if (frozen[p.species[i]]) { p.vx[i] = hx_[i]; p.vy[i] = hy_[i]; p.vz[i] = hz_[i]; continue; }
+        if (frozen[p.species[i]]) continue;  // the predictor left a frozen particle's velocity alone
         p.vx[i] = hx_[i] + halfDt * p.fx[i];
         p.vy[i] = hy_[i] + halfDt * p.fy[i];
         p.vz[i] = hz_[i] + halfDt * p.fz[i];

@@ -52,6 +52,25 @@ StandardFluidSettings fluid1500() {
 
 }  // namespace
 
+namespace {
+
+// A cubic box with a fluid and a frozen wall species, every pair declared interacting (a 25,
+// gamma 4.5), kT 1, dt 0.04; the caller adds particles.
+System fluidAndWall(double side) {
+    System sys;
+    sys.box.lo = Eigen::Vector3d(0, 0, 0);
+    sys.box.hi = Eigen::Vector3d(side, side, side);
+    sys.species.add({"fluid", false});
+    sys.species.add({"wall", true});
+    sys.pairs = PairTable(2);
+    for (int a = 0; a < 2; ++a)
+        for (int b = a; b < 2; ++b) sys.pairs.set(a, b, {25.0, 4.5, 0.0, true});
+    sys.forceParameters = {1.0, 2.0, 1.0, 0.04};
+    return sys;
+}
+
+}  // namespace
+
 TEST(Conservation, MomentumWithoutBodyForce) {
     for (const std::string type : {"GrootWarren", "Euler"}) {
         SCOPED_TRACE(type);
@@ -102,16 +121,8 @@ namespace {
 // A fluid (species 0) at density 3 in an 8 x 8 x 8 box with 300 frozen particles (species 1) scattered
 // among it, as in an equilibrated random frozen wall. The frozen particles carry `frozenVelocity`.
 System fluidWithFrozenParticles(const Eigen::Vector3d& frozenVelocity) {
-    System sys;
-    sys.box.lo = Eigen::Vector3d(0, 0, 0);
-    sys.box.hi = Eigen::Vector3d(8, 8, 8);
-    sys.species.add({"fluid", false});
-    sys.species.add({"wall", true});
-    sys.pairs = PairTable(2);
     // Frozen-frozen pairs are declared interacting here on purpose: initialise() must switch them off.
-    for (int a = 0; a < 2; ++a)
-        for (int b = a; b < 2; ++b) sys.pairs.set(a, b, {25.0, 4.5, 0.0, true});
-    sys.forceParameters = {1.0, 2.0, 1.0, 0.04};
+    System sys = fluidAndWall(8.0);
     sys.seed = 11;
     const PairRandom random(sys.seed);
     const auto all = [](double, double, double) { return true; };
@@ -204,15 +215,7 @@ TEST(Conservation, MovingFrozenParticlesKeepTheirVelocity) {
 TEST(Conservation, FrozenPairsExertNoForce) {
     // Two frozen particles 0.5 apart (a = 25 would give 12.5 each) and a fluid particle 0.5 from a third
     // frozen one, far from the first two, in a 5 x 5 x 5 box.
-    System sys;
-    sys.box.lo = Eigen::Vector3d(0, 0, 0);
-    sys.box.hi = Eigen::Vector3d(5, 5, 5);
-    sys.species.add({"fluid", false});
-    sys.species.add({"wall", true});
-    sys.pairs = PairTable(2);
-    for (int a = 0; a < 2; ++a)
-        for (int b = a; b < 2; ++b) sys.pairs.set(a, b, {25.0, 4.5, 0.0, true});
-    sys.forceParameters = {1.0, 2.0, 1.0, 0.04};
+    System sys = fluidAndWall(5.0);
     sys.particles.add(1, 1, 1.0, 1.0, 1.0, 0.3, 0.0, 0.0);  // frozen, moving (a sliding wall)
     sys.particles.add(2, 1, 1.5, 1.0, 1.0);                 // frozen, at rest, 0.5 from particle 1
     sys.particles.add(3, 1, 3.5, 3.5, 3.5);                 // frozen
