@@ -29,7 +29,8 @@ std::string resolveFile(const Dictionary& d, const std::string& caseDir) {
 }
 
 ImageMaskSettings readMaskSettings(const Dictionary& d, const Box& box) {
-    d.checkKeys({"type", "file", "solidValues", "solidBelow", "solidAbove", "pixelSize", "extrudeAxis", "origin", "gridSpacing"});
+    d.checkKeys({"type", "file", "solidValues", "solidBelow", "solidAbove", "pixelSize", "smooth", "extrudeAxis", "origin",
+                 "gridSpacing"});
     ImageMaskSettings s;
     const int given = (d.found("solidValues") ? 1 : 0) + (d.found("solidBelow") ? 1 : 0) + (d.found("solidAbove") ? 1 : 0);
     if (given != 1) d.fail("solidValues", "say which pixels are solid with exactly one of solidValues, solidBelow, solidAbove");
@@ -42,6 +43,7 @@ ImageMaskSettings readMaskSettings(const Dictionary& d, const Box& box) {
         s.threshold = d.get<double>(s.solidBelow ? "solidBelow" : "solidAbove");
     }
     s.pixelSize = d.getPositive<double>("pixelSize");
+    s.smooth = d.getOrDefault<bool>("smooth", true);
     s.extrudeAxis = readExtrudeAxis(d, box);
     s.origin = d.getOrDefault<Eigen::Vector3d>("origin", box.lo);
     return s;

@@ -11,6 +11,7 @@
 //       // solidBelow 128;        //   grey < 128 is solid, or
 //       // solidAbove 128;        //   grey > 128 is solid
 //       pixelSize   0.1;          // side of one pixel in box units; the image must cover the box
+//       smooth      yes;          // anti-alias the pixel staircase (ImageMask.hpp); default yes
 //       extrudeAxis y;            // the axis normal to the image (y, the only choice in 2-D)
 //       origin      (-80 0 -80);  // box position of the image's lower-left corner; default box min
 //       gridSpacing 0.125;        // background grid of the flags and the distance; default cutoff/4

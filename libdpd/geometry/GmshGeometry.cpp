@@ -51,20 +51,24 @@ struct SimplexMesh {
     }
 };
 
-// gmsh is one global state: initialise it once and use it from one thread at a time.
+// gmsh is one global state: one thread at a time, and a fresh start for every file, since a file
+// that fails to parse leaves gmsh 4.8 unable to read the next one.
 std::mutex& gmshMutex() {
     static std::mutex m;
     return m;
 }
 
-void openWithGmsh(const std::string& file) {
-    static bool initialised = false;
-    if (!initialised) {
+struct GmshSession {
+    GmshSession() {
         gmsh::initialize(0, nullptr, false);
-        initialised = true;
+        gmsh::option::setNumber("General.Terminal", 0);
     }
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::clear();
+    ~GmshSession() { gmsh::finalize(); }
+    GmshSession(const GmshSession&) = delete;
+    GmshSession& operator=(const GmshSession&) = delete;
+};
+
+void openWithGmsh(const std::string& file) {
     try {
         gmsh::open(file);
     } catch (const std::string& e) {
@@ -227,6 +231,7 @@ void addBoundary(const SimplexMesh& mesh, const GeometryFrame& frame, bool group
 SolidGeometry gmshGeometry(const GmshSettings& s, const Box& box, double searchReach) {
     if (!std::filesystem::is_regular_file(s.file)) fail(s.file, "no such gmsh file");
     const std::lock_guard<std::mutex> lock(gmshMutex());
+    const GmshSession session;
     openWithGmsh(s.file);
     bool groupIsFluid = true;
     const auto [dim, tag] = regionGroup(s.file, groupIsFluid);
@@ -234,6 +239,9 @@ SolidGeometry gmshGeometry(const GmshSettings& s, const Box& box, double searchR
     RawElements raw = groupSimplices(s.file, dim, tag);
     if (raw.nodeTags.empty()) {
         if (s.meshSize > 0.0) gmsh::option::setNumber("Mesh.MeshSizeMax", s.meshSize);
+        // Plain Delaunay for surfaces: gmsh 4.8's default Frontal-Delaunay corrupted the heap on
+        // the side faces of an extruded volume (tests/geometry/GmshGeometryTest, 3-D channel).
+        gmsh::option::setNumber("Mesh.Algorithm", 5);
         try {
             gmsh::model::mesh::generate(dim);
         } catch (const std::string& e) {
@@ -245,7 +253,6 @@ SolidGeometry gmshGeometry(const GmshSettings& s, const Box& box, double searchR
     auto mesh = std::make_shared<SimplexMesh>(buildMesh(s.file, raw, frame));
     BoundaryFacets facets(frame);
     addBoundary(*mesh, frame, groupIsFluid, facets);
-    gmsh::clear();
     return SolidGeometry(
         frame, [mesh, groupIsFluid](const Eigen::Vector3d& p) { return mesh->containsPoint(p) != groupIsFluid; },
         std::move(facets), s.file, searchReach);

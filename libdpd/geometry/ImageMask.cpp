@@ -8,10 +8,25 @@
 
 namespace dpd {
 
-bool PixelMask::at(int i, int j) const {
+double PixelMask::at(int i, int j) const {
     i = ((i % width) + width) % width;
     j = ((j % height) + height) % height;
-    return solid[static_cast<std::size_t>(j) * width + i] != 0;
+    return solid[static_cast<std::size_t>(j) * width + i];
+}
+
+void PixelMask::smooth() {
+    // The binomial kernel (1 4 6 4 1)/16 along each axis in turn, wrapping periodically.
+    constexpr double w[5] = {1.0 / 16, 4.0 / 16, 6.0 / 16, 4.0 / 16, 1.0 / 16};
+    for (int axis = 0; axis < 2; ++axis) {
+        std::vector<double> out(solid.size());
+        for (int j = 0; j < height; ++j)
+            for (int i = 0; i < width; ++i) {
+                double sum = 0.0;
+                for (int k = -2; k <= 2; ++k) sum += w[k + 2] * (axis == 0 ? at(i + k, j) : at(i, j + k));
+                out[static_cast<std::size_t>(j) * width + i] = sum;
+            }
+        solid = std::move(out);
+    }
 }
 
 PixelMask thresholdImage(const GreyImage& image, const ImageMaskSettings& s) {
@@ -24,7 +39,7 @@ PixelMask thresholdImage(const GreyImage& image, const ImageMaskSettings& s) {
             const double g = image.at(row, col);
             const bool solid = s.useThreshold ? (s.solidBelow ? g < s.threshold : g > s.threshold)
                                               : std::find(s.solidValues.begin(), s.solidValues.end(), g) != s.solidValues.end();
-            m.solid[static_cast<std::size_t>(image.height - 1 - row) * image.width + col] = solid ? 1 : 0;
+            m.solid[static_cast<std::size_t>(image.height - 1 - row) * image.width + col] = solid ? 1.0 : 0.0;
         }
     return m;
 }
@@ -44,7 +59,7 @@ void checkCoversBox(const PixelMask& m, const GeometryFrame& frame, double pixel
         }
 }
 
-// Solid where the bilinear interpolation of the pixel-centre values is >= 1/2.
+// Solid where the bilinear interpolation of the (smoothed) pixel-centre values is >= 1/2.
 bool bilinearSolid(const PixelMask& m, double pixelSize, const Eigen::Vector3d& p) {
     const double x = p.x() / pixelSize - 0.5, y = p.y() / pixelSize - 0.5;
     const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
@@ -62,37 +77,45 @@ Eigen::Vector3d normalTowards(const Eigen::Vector3d& a, const Eigen::Vector3d& b
     return n.dot(fluidSide - 0.5 * (a + b)) >= 0.0 ? n : Eigen::Vector3d(-n);
 }
 
-// The marching-squares contour at 1/2 through every square of four neighbouring pixel centres.
+// The marching-squares contour at 1/2 through every square of four neighbouring pixel centres, its
+// vertices where the values interpolated linearly along an edge cross 1/2.
 void addContour(const PixelMask& m, double h, BoundaryFacets& facets) {
     for (int j = 0; j < m.height; ++j)
         for (int i = 0; i < m.width; ++i) {
             // Corners counter-clockwise from (i, j); edge e joins corner e and corner e+1.
             const int ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};
             Eigen::Vector3d corner[4];
+            double value[4];
             bool solid[4];
             for (int c = 0; c < 4; ++c) {
                 corner[c] = Eigen::Vector3d((ci[c] + 0.5) * h, (cj[c] + 0.5) * h, 0.0);
-                solid[c] = m.at(ci[c], cj[c]);
+                value[c] = m.at(ci[c], cj[c]);
+                solid[c] = value[c] >= 0.5;
             }
+            const auto cross = [&](int e) {
+                const int f = (e + 1) % 4;
+                const double t = (0.5 - value[e]) / (value[f] - value[e]);
+                return Eigen::Vector3d(corner[e] + t * (corner[f] - corner[e]));
+            };
             std::vector<int> crossed;
             for (int e = 0; e < 4; ++e)
                 if (solid[e] != solid[(e + 1) % 4]) crossed.push_back(e);
-            if (crossed.empty()) continue;
-            const auto mid = [&](int e) { return Eigen::Vector3d(0.5 * (corner[e] + corner[(e + 1) % 4])); };
             if (crossed.size() == 2) {
                 Eigen::Vector3d fluidCentre(0, 0, 0);
                 int nFluid = 0;
                 for (int c = 0; c < 4; ++c)
                     if (!solid[c]) { fluidCentre += corner[c]; ++nFluid; }
-                const Eigen::Vector3d a = mid(crossed[0]), b = mid(crossed[1]);
+                const Eigen::Vector3d a = cross(crossed[0]), b = cross(crossed[1]);
                 facets.addSegment(a, b, normalTowards(a, b, fluidCentre / nFluid));
-            } else {
-                // Checkerboard: the interpolant is exactly 1/2 on the two lines through the square's
-                // centre, so the contour is the four half-lines from the edge midpoints to the centre.
-                const Eigen::Vector3d centre = 0.25 * (corner[0] + corner[1] + corner[2] + corner[3]);
-                for (int e = 0; e < 4; ++e) {
-                    const Eigen::Vector3d fluidCorner = solid[e] ? corner[(e + 1) % 4] : corner[e];
-                    facets.addSegment(mid(e), centre, normalTowards(mid(e), centre, fluidCorner));
+            } else if (crossed.size() == 4) {
+                // Saddle: the centre value (the mean, as the bilinear interpolant has it) decides
+                // which diagonal pair is joined; each corner of the other kind is cut off alone.
+                const bool centreSolid = 0.25 * (value[0] + value[1] + value[2] + value[3]) >= 0.5;
+                for (int c = 0; c < 4; ++c) {
+                    if (solid[c] == centreSolid) continue;
+                    const Eigen::Vector3d a = cross((c + 3) % 4), b = cross(c);
+                    const Eigen::Vector3d away = solid[c] ? Eigen::Vector3d(2.0 * 0.5 * (a + b) - corner[c]) : corner[c];
+                    facets.addSegment(a, b, normalTowards(a, b, away));
                 }
             }
         }
@@ -104,6 +127,7 @@ SolidGeometry imageMaskGeometry(const GreyImage& image, const ImageMaskSettings&
                                 const std::string& source, double searchReach) {
     const GeometryFrame frame = GeometryFrame::planar(box, s.extrudeAxis, s.origin);
     auto mask = std::make_shared<PixelMask>(thresholdImage(image, s));
+    if (s.smooth) mask->smooth();
     checkCoversBox(*mask, frame, s.pixelSize, source);
     BoundaryFacets facets(frame);
     addContour(*mask, s.pixelSize, facets);

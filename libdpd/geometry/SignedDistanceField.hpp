@@ -6,8 +6,10 @@
 //
 // Accuracy: the table holds the exact distance to the geometry's surface facets (SolidGeometry);
 // linear interpolation of a distance function adds at most h^2 / (8 R) for a surface of curvature
-// radius R on a grid of spacing h (and up to about h near sharp corners). Beyond +-band the distance
-// is clipped to +-band and the normal is zero.
+// radius R on a grid of spacing h, and up to h/2 within a cell of a ridge (points equally near two
+// surfaces, like the middle of a channel) or a sharp corner. The normal is the direction to the
+// nearest surface point, interpolated and normalised. Beyond +-band the distance is clipped to
+// +-band and the normal is zero.
 #include "geometry/BackgroundGrid.hpp"
 #include "geometry/SolidGeometry.hpp"
 
