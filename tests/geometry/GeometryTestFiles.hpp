@@ -2,6 +2,8 @@
 // Files the geometry tests write for themselves: grey images as PGM (text), PNG and TIFF written
 // byte by byte here (uncompressed, rows from the top as both formats define), so that the readers
 // are checked against the formats themselves and not against VTK's own writers; gmsh .geo text.
+#include "core/Error.hpp"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -114,6 +116,17 @@ inline void writeTiff(const std::string& path, const Picture& rows) {
     }
     put32(0);
     writeBytes(path, t);
+}
+
+// The message of the dpd::InputError that f throws ("" if none).
+template <class F>
+std::string inputError(F&& f) {
+    try {
+        f();
+    } catch (const dpd::InputError& e) {
+        return e.what();
+    }
+    return "";
 }
 
 // A fresh directory per test (ctest runs tests in parallel), removed afterwards.

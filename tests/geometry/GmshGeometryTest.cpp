@@ -66,16 +66,6 @@ SolidRegion gmshRegion(const std::string& file, const Box& box) {
     return readSolidRegion(Dictionary::parse("type gmsh; file \"" + file + "\"; gridSpacing 0.25;", "gmshDict"), "", box, 1.0);
 }
 
-template <class F>
-std::string inputError(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
 class GmshGeometry : public ScratchDirectory {};
 
 TEST_F(GmshGeometry, MissingUnparsableOrUngroupedFilesAreClearErrors) {

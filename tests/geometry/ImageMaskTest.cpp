@@ -29,17 +29,6 @@ Dictionary maskDict(const std::string& file, const std::string& extra) {
     return Dictionary::parse("type imageMask; file \"" + file + "\"; " + extra, "geometryDict");
 }
 
-// The message of the InputError that f throws ("" if none).
-template <class F>
-std::string inputError(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
 // A pseudo-random pattern of grey levels: about half the pixels darker than 128.
 Picture pattern(int width, int height) {
     Picture p(height, std::vector<int>(width));
