@@ -137,8 +137,9 @@ StabilitySettings readStability(const Dictionary& d) {
 }  // namespace
 
 DpdModel readDpdModel(const Dictionary& d) {
+    // geometry: the solid of any shape, read where it is used (geometry/GeometryDictionary).
     d.checkKeys({"dimension", "kT", "cutoff", "seed", "weightExponent", "species", "pairCoeffs", "integrator",
-                 "bodyForce", "walls", "stability"});
+                 "bodyForce", "walls", "stability", "geometry"});
     DpdModel m;
     m.dimension = d.getOrDefault<int>("dimension", 3);
     if (m.dimension != 2 && m.dimension != 3) d.fail("dimension", "must be 2 or 3");

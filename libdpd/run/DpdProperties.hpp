@@ -12,6 +12,8 @@
 //   bodyForce  { type uniform; value (0.02 0 0); }     // none | uniform | reversePoiseuille (+ gradientAxis z)
 //   walls      { lower { type plane; point (0 0 -20); normal (0 0 1); velocity (0 0 0); reflection bounceBack; } }
 //   stability  { maxKTRatio 2; maxInsideWalls 0; }   // optional
+//   geometry   { type imageMask; file "constant/geometry/mask.png"; ... }   // optional: a solid of any
+//                                                 // shape (geometry/GeometryDictionary.hpp)
 //
 // Every pair of species that can interact (at least one not frozen) needs its coefficients; pairs
 // of frozen species never interact and need none.

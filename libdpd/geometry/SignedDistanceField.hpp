@@ -1,0 +1,43 @@
+#pragma once
+// The signed distance to the solid surface and its normal (into the fluid), tabulated at the cell
+// centres of a background grid and interpolated (linearly along each varying axis) anywhere in the
+// periodic box. A query is O(1): one cell lookup and 2^d table entries, so the solver can afford one
+// per particle and step.
+//
+// Accuracy: the table holds the exact distance to the geometry's surface facets (SolidGeometry);
+// linear interpolation of a distance function adds at most h^2 / (8 R) for a surface of curvature
+// radius R on a grid of spacing h, and up to h/2 within a cell of a ridge (points equally near two
+// surfaces, like the middle of a channel) or a sharp corner. The normal is the direction to the
+// nearest surface point, interpolated and normalised. Beyond +-band the distance is clipped to
+// +-band and the normal is zero.
+#include "geometry/BackgroundGrid.hpp"
+#include "geometry/SolidGeometry.hpp"
+
+#include <vector>
+
+namespace dpd {
+
+class SignedDistanceField {
+public:
+    // Tabulates the geometry at the grid's cell centres. The signs there come from the same
+    // SolidGeometry::isSolid as SolidFlags on that grid, so the two agree cell by cell.
+    SignedDistanceField(const SolidGeometry& geometry, const BackgroundGrid& grid, double band);
+
+    // Distance (positive in the fluid) and unit normal into the fluid at a box point.
+    SurfaceDistance at(const Eigen::Vector3d& r) const;
+    double distance(const Eigen::Vector3d& r) const { return at(r).distance; }
+
+    const BackgroundGrid& grid() const { return grid_; }
+    double band() const { return band_; }
+
+private:
+    struct Node {
+        float distance;
+        float normal[3];
+    };
+    BackgroundGrid grid_;
+    double band_;
+    std::vector<Node> nodes_;
+};
+
+}  // namespace dpd
