@@ -1,33 +1,18 @@
 #include "integrators/DpdVvIntegrator.hpp"
 
 #include "integrators/PartialPairForces.hpp"
+#include "integrators/StepParts.hpp"
 #include "run/System.hpp"
 
 namespace dpd {
 
 WallCounters DpdVvIntegrator::step(System& sys) {
     Particles& p = sys.particles;
-    const double dt = sys.dt();
-    const double halfDt = 0.5 * dt;
+    const double halfDt = 0.5 * sys.dt();
     const auto& frozen = sys.frozenOfSpecies();
     const long n = static_cast<long>(p.size());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (!frozen[p.species[i]]) {
-            p.vx[i] += halfDt * p.fx[i];
-            p.vy[i] += halfDt * p.fy[i];
-            p.vz[i] += halfDt * p.fz[i];
-        }
-        p.rx[i] += dt * p.vx[i];
-        p.ry[i] += dt * p.vy[i];
-        p.rz[i] += dt * p.vz[i];
-    }
-    sys.advanceClock();
-    // Reflect before wrapping: a particle that crossed a wall lying on a box face must be mirrored
-    // back, not carried round to the far side of the box.
-    const WallCounters walls = sys.applyWalls();
-    sys.wrapPositions();
-    sys.sortByCell();
+    halfKickAndDrift(sys);
+    const WallCounters walls = endMove(sys);
     sys.computeForces();
     // Second half kick; keep v(t+dt) and f' aside, and put the velocity change dt f' / 2 in the
     // particles' velocities (zero for frozen particles, whose velocity never changes) so that one
