@@ -1,5 +1,6 @@
 #include "integrators/GrootWarrenIntegrator.hpp"
 
+#include "integrators/StepParts.hpp"
 #include "run/System.hpp"
 
 namespace dpd {
@@ -10,25 +11,8 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
     const double halfDt = 0.5 * dt;
     const auto& frozen = sys.frozenOfSpecies();
     const long n = static_cast<long>(p.size());
-    // Half kick then drift: r + dt (v + dt f / 2) is r + dt v + dt^2 f / 2. The half-kicked velocity
-    // is what a wall reflects, since it is the velocity the particle carries on with.
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (!frozen[p.species[i]]) {
-            p.vx[i] += halfDt * p.fx[i];
-            p.vy[i] += halfDt * p.fy[i];
-            p.vz[i] += halfDt * p.fz[i];
-        }
-        p.rx[i] += dt * p.vx[i];
-        p.ry[i] += dt * p.vy[i];
-        p.rz[i] += dt * p.vz[i];
-    }
-    sys.advanceClock();
-    // Reflect before wrapping: a particle that crossed a wall lying on a box face must be mirrored
-    // back, not carried round to the far side of the box.
-    const WallCounters walls = sys.applyWalls();
-    sys.wrapPositions();
-    sys.sortByCell();
+    halfKickAndDrift(sys);
+    const WallCounters walls = endMove(sys);
     // Keep v + dt f / 2 aside and predict v~ = v + lambda dt f = (v + dt f / 2) + (lambda - 1/2) dt f.
     hx_.resize(n); hy_.resize(n); hz_.resize(n);
     const double predict = (lambda_ - 0.5) * dt;

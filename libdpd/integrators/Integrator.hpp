@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dpd {
 
@@ -19,9 +20,13 @@ public:
 };
 
 struct IntegratorSettings {
-    std::string type = "GrootWarren";  // Euler | GrootWarren
+    std::string type = "GrootWarren";  // one of integratorTypes()
     double lambda = 0.65;              // Groot-Warren only; 0.5 is velocity Verlet
 };
+
+// The valid types: Euler, GrootWarren, DPDVV, Shardlow; and the same as text ("Euler, ... or Shardlow").
+const std::vector<std::string>& integratorTypes();
+std::string integratorTypeList();
 
 // Throws std::invalid_argument for an unknown type or a lambda outside [0, 1].
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s);

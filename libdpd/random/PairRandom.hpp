@@ -27,6 +27,22 @@ public:
         return kSqrt12 * (uniformOpen01(bits) - 0.5);
     }
 
+    // Standard normal variate for the pair (idA, idB) at a step, symmetric in the two ids, from a
+    // stream of its own (a RandomStream value below 0x8000): a pair scheme that draws more than once
+    // per step (Shardlow's splitting, one draw per sweep) gives each sweep its own stream, and none
+    // of them meets pairUniform's numbers (whose fourth word has the top 16 bits exactly 0x8000 for
+    // any step below 2^48, while these carry 0x8000 | stream with stream >= 1).
+    double pairGaussian(std::uint64_t step, std::uint64_t idA, std::uint64_t idB, std::uint32_t stream) const {
+        const std::uint64_t lo = idA < idB ? idA : idB;
+        const std::uint64_t hi = idA < idB ? idB : idA;
+        const PhiloxCounter c{static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi),
+                              static_cast<std::uint32_t>(step),
+                              (static_cast<std::uint32_t>(step >> 32) & 0xFFFFu) | ((kPairStream >> 16 | stream) << 16)};
+        const PhiloxCounter w = philox4x32(c, key_);
+        // Box-Muller, cosine branch only.
+        return std::sqrt(-2.0 * std::log(uniformOpen01(w[0]))) * std::cos(2.0 * M_PI * uniformOpen01(w[1]));
+    }
+
     // Four independent standard normal variates for one particle at a step; `stream` separates
     // independent uses (thermostat walls, reflections, initial velocities ...).
     std::array<double, 4> particleGaussians(std::uint64_t step, std::uint64_t id, std::uint32_t stream) const {
@@ -67,6 +83,7 @@ enum RandomStream : std::uint32_t {
     kStreamInitialPosition = 2,
     kStreamReflection = 3,
     kStreamWallThermostat = 4,
+    kStreamShardlowSweep = 5,  // pair Gaussians of Shardlow's dissipative-random sweep (pairGaussian)
 };
 
 }  // namespace dpd

@@ -5,6 +5,7 @@
 #include "io/Snapshot.hpp"
 #include "run/System.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -63,7 +64,10 @@ IntegratorSettings readIntegrator(const Dictionary& d) {
     const Dictionary& id = d.subDict("integrator");
     id.checkKeys({"type", "lambda"});
     s.type = id.get<std::string>("type");
-    if (s.type != "Euler" && s.type != "GrootWarren") id.fail("type", "expected Euler or GrootWarren");
+    const auto& types = integratorTypes();
+    if (std::find(types.begin(), types.end(), s.type) == types.end())
+        id.fail("type", "unknown integrator '" + s.type + "': expected " + integratorTypeList());
+    if (s.type != "GrootWarren" && id.found("lambda")) id.fail("lambda", "only the GrootWarren integrator takes lambda");
     s.lambda = id.getOrDefault<double>("lambda", 0.65);
     if (s.lambda < 0.0 || s.lambda > 1.0) id.fail("lambda", "must lie in [0, 1]");
     return s;

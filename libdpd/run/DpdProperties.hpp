@@ -8,7 +8,7 @@
 //   weightExponent 2;             // s in w_D = (1 - r/rc)^s; 2 is standard
 //   species   { fluid { frozen no; } wall { frozen yes; } }
 //   pairCoeffs { fluid-fluid { a 18.75; gamma 4.5; } fluid-wall { a 18.75; gamma 4.5; } }
-//   integrator { type GrootWarren; lambda 0.65; }
+//   integrator { type GrootWarren; lambda 0.65; }   // Euler | GrootWarren (lambda) | DPDVV | Shardlow
 //   bodyForce  { type uniform; value (0.02 0 0); }     // none | uniform | reversePoiseuille (+ gradientAxis z)
 //   walls      { lower { type plane; point (0 0 -20); normal (0 0 1); velocity (0 0 0); reflection bounceBack; } }
 //   stability  { maxKTRatio 2; maxInsideWalls 0; }   // optional

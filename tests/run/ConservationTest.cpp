@@ -72,7 +72,7 @@ System fluidAndWall(double side) {
 }  // namespace
 
 TEST(Conservation, MomentumWithoutBodyForce) {
-    for (const std::string type : {"GrootWarren", "Euler"}) {
+    for (const std::string& type : integratorTypes()) {
         SCOPED_TRACE(type);
         System sys = makeStandardFluid(fluid1500());
         const double n = static_cast<double>(sys.particles.size());
@@ -90,7 +90,7 @@ TEST(Conservation, MomentumWithoutBodyForce) {
 }
 
 TEST(Conservation, UniformBodyForceAddsNgDtPerStep) {
-    for (const std::string type : {"GrootWarren", "Euler"}) {
+    for (const std::string& type : integratorTypes()) {
         SCOPED_TRACE(type);
         System sys = makeStandardFluid(fluid1500());
         sys.bodyForce.type = BodyForce::Type::uniform;
@@ -158,7 +158,7 @@ std::map<std::uint64_t, State> frozenStates(const System& sys) {
 }  // namespace
 
 TEST(Conservation, FrozenParticlesNeverMove) {
-    for (const std::string type : {"GrootWarren", "Euler"}) {
+    for (const std::string& type : integratorTypes()) {
         SCOPED_TRACE(type);
         System sys = fluidWithFrozenParticles(Eigen::Vector3d::Zero());
         EXPECT_FALSE(sys.pairs(1, 1).interact);
@@ -191,7 +191,7 @@ TEST(Conservation, MovingFrozenParticlesKeepTheirVelocity) {
     // position advanced by n dt v (wrapped), to round-off (100 additions of 0.02 to numbers < 8:
     // error < 100 * eps * 8 ~ 2e-13).
     const Eigen::Vector3d u(0.5, 0.0, -0.25);
-    for (const std::string type : {"GrootWarren", "Euler"}) {
+    for (const std::string& type : integratorTypes()) {
         SCOPED_TRACE(type);
         System sys = fluidWithFrozenParticles(u);
         auto scheme = makeScheme(type);

@@ -134,7 +134,7 @@ TEST(Determinism, OneAndTwoThreadsGiveIdenticalTrajectories3D) {
     ThreadCount restore;
     const auto make = [] { return makeStandardFluid(fluid3D(5)); };
     EXPECT_EQ(make().cells().cellsPerAxis()[0], 9);
-    for (const std::string scheme : {"GrootWarren", "Euler"}) {
+    for (const std::string& scheme : integratorTypes()) {
         SCOPED_TRACE(scheme);
         const Particles one = run(make, scheme, 1, 50);
         const Particles two = run(make, scheme, 2, 50);
@@ -146,20 +146,26 @@ TEST(Determinism, OneAndTwoThreadsGiveIdenticalTrajectories2D) {
     ThreadCount restore;
     const auto make = [] { return makeStandardFluid(fluid2D(5)); };
     EXPECT_EQ(make().cells().cellsPerAxis()[0], 21);
-    const Particles one = run(make, "GrootWarren", 1, 50);
-    const Particles two = run(make, "GrootWarren", 2, 50);
-    expectIdentical(one, two);
+    for (const std::string& scheme : integratorTypes()) {
+        SCOPED_TRACE(scheme);
+        const Particles one = run(make, scheme, 1, 50);
+        const Particles two = run(make, scheme, 2, 50);
+        expectIdentical(one, two);
+    }
 }
 
 TEST(Determinism, OneAndTwoThreadsGiveIdenticalTrajectoriesInAChannel) {
     ThreadCount restore;
     const auto make = [] { return channel(5); };
     EXPECT_EQ(make().cells().cellsPerAxis()[0], 9);
-    long reflections = 0;
-    const Particles one = run(make, "GrootWarren", 1, 50, &reflections);
-    EXPECT_GT(reflections, 0) << "the walls must have reflected something for the test to mean much";
-    const Particles two = run(make, "GrootWarren", 2, 50);
-    expectIdentical(one, two);
+    for (const std::string& scheme : integratorTypes()) {
+        SCOPED_TRACE(scheme);
+        long reflections = 0;
+        const Particles one = run(make, scheme, 1, 50, &reflections);
+        EXPECT_GT(reflections, 0) << "the walls must have reflected something for the test to mean much";
+        const Particles two = run(make, scheme, 2, 50);
+        expectIdentical(one, two);
+    }
 }
 
 TEST(Determinism, SameSeedSameTrajectoryDifferentSeedDifferent) {

@@ -1,0 +1,22 @@
+#include "integrators/ShardlowIntegrator.hpp"
+
+#include "integrators/PartialPairForces.hpp"
+#include "integrators/ShardlowSweep.hpp"
+#include "integrators/StepParts.hpp"
+#include "run/System.hpp"
+
+namespace dpd {
+
+WallCounters ShardlowIntegrator::step(System& sys) {
+    if (forcesStep_ != sys.step) computeConservativeForces(sys);
+    const double dt = sys.dt();
+    shardlowSweep(sys, dt, 0);
+    halfKickAndDrift(sys);
+    const WallCounters walls = endMove(sys);
+    computeConservativeForces(sys);
+    kick(sys, 0.5 * dt);
+    forcesStep_ = sys.step;
+    return walls;
+}
+
+}  // namespace dpd

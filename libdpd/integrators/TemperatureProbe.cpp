@@ -1,0 +1,64 @@
+#include "integrators/TemperatureProbe.hpp"
+
+#include "integrators/Integrator.hpp"
+#include "run/Monitors.hpp"
+#include "run/System.hpp"
+#include "sampling/BlockStatistics.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace dpd {
+
+namespace {
+
+// Means of `blocks` equal consecutive blocks of the series (a remainder at the end is dropped).
+std::vector<double> blockMeans(const std::vector<double>& series, int blocks) {
+    const std::size_t perBlock = series.size() / static_cast<std::size_t>(blocks);
+    std::vector<double> means(blocks, 0.0);
+    for (int b = 0; b < blocks; ++b) {
+        for (std::size_t k = 0; k < perBlock; ++k) means[b] += series[b * perBlock + k];
+        means[b] /= static_cast<double>(perBlock);
+    }
+    return means;
+}
+
+}  // namespace
+
+TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, const TemperatureProbeSettings& s) {
+    const double dt = sys.dt();
+    const std::int64_t equilibration = std::llround(s.equilibrationTime / dt);
+    const std::int64_t production = std::llround(s.productionTime / dt);
+    const std::int64_t sampleEvery = std::max<std::int64_t>(1, std::llround(s.sampleInterval / dt));
+    const double setKT = sys.forceParameters.kT;
+    TemperatureProbeResult r;
+    std::vector<double> samples;
+    double stepSeconds = 0.0;
+    for (std::int64_t k = 1; k <= equilibration + production; ++k) {
+        const auto t0 = std::chrono::steady_clock::now();
+        integrator.step(sys);
+        stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        ++r.steps;
+        if (k == equilibration) stepSeconds = 0.0;  // time the production only
+        const bool sample = k > equilibration && (k - equilibration) % sampleEvery == 0;
+        if (!sample && k % s.checkEvery != 0) continue;
+        const MonitorReport m = monitor(sys, -1);
+        if (!m.finite || m.kT > s.maxKTRatio * setKT) {
+            r.unstable = true;
+            r.unstableAfter = k * dt;
+            r.problem = !m.finite ? "non-finite positions, velocities or forces" : "kT runaway (kT = " + std::to_string(m.kT) + ")";
+            return r;
+        }
+        if (sample) samples.push_back(m.kT);
+    }
+    r.seconds = stepSeconds;
+    const std::vector<double> means = blockMeans(samples, s.blocks);
+    for (double m : means) r.kT += m;
+    r.kT /= static_cast<double>(s.blocks);
+    r.standardError = standardErrorOfMean(means) / s.blockEfficiency;
+    return r;
+}
+
+}  // namespace dpd

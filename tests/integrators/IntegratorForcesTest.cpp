@@ -1,0 +1,78 @@
+// What each new scheme leaves in the particles' forces at the end of a step (the Integrator contract:
+// the forces of the new state, as the scheme defines them):
+// - DPD-VV re-evaluates the dissipative force with the final velocities, so its forces are exactly the
+//   full DPD forces of the new positions and velocities (with the new step's random numbers), which
+//   System::computeForces recomputes from scratch;
+// - Shardlow's forces are the conservative and body forces of the new positions.
+// Round-off: a particle's force sums ~40 pair terms of size up to ~30, and DPD-VV adds the dissipative
+// correction f^D(v(t+dt) - v') to f' instead of evaluating f^D(v(t+dt)) directly, so the two agree to
+// ~40 x 30 x 1e-16 ~ 1e-13; accept 1e-10. Forces with the half-step velocities instead would differ by
+// gamma w_D e.(dt f / 2) ~ 4.5 x 0.25 x 0.02 x 20 ~ 0.5.
+#include "integrators/Integrator.hpp"
+#include "integrators/PartialPairForces.hpp"
+#include "run/StandardFluid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace dpd;
+
+namespace {
+
+StandardFluidSettings fluid() {
+    StandardFluidSettings s;
+    s.particles = 1000;
+    s.dt = 0.04;
+    s.seed = 9;
+    return s;
+}
+
+// Largest component-wise difference between the particles' forces and those `recompute` gives.
+double largestForceDifference(System& sys, void (*recompute)(System&)) {
+    const Particles before = sys.particles;
+    recompute(sys);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < before.size(); ++i) {
+        worst = std::max(worst, std::abs(before.fx[i] - sys.particles.fx[i]));
+        worst = std::max(worst, std::abs(before.fy[i] - sys.particles.fy[i]));
+        worst = std::max(worst, std::abs(before.fz[i] - sys.particles.fz[i]));
+    }
+    return worst;
+}
+
+void fullForces(System& sys) { sys.computeForces(); }
+
+std::unique_ptr<Integrator> scheme(const std::string& type) {
+    IntegratorSettings s;
+    s.type = type;
+    return makeIntegrator(s);
+}
+
+}  // namespace
+
+TEST(IntegratorForces, DpdVvLeavesTheFullForcesOfTheFinalVelocities) {
+    System sys = makeStandardFluid(fluid());
+    sys.bodyForce.type = BodyForce::Type::uniform;
+    sys.bodyForce.g = Eigen::Vector3d(0.3, 0, 0);
+    sys.computeForces();
+    auto dpdvv = scheme("DPDVV");
+    for (int k = 0; k < 20; ++k) dpdvv->step(sys);
+    EXPECT_LT(largestForceDifference(sys, fullForces), 1e-10);
+    // Groot-Warren leaves the forces of its predicted velocity instead: the check can tell them apart.
+    auto gw = scheme("GrootWarren");
+    gw->step(sys);
+    EXPECT_GT(largestForceDifference(sys, fullForces), 0.01);
+}
+
+TEST(IntegratorForces, ShardlowLeavesTheConservativeAndBodyForces) {
+    System sys = makeStandardFluid(fluid());
+    sys.bodyForce.type = BodyForce::Type::uniform;
+    sys.bodyForce.g = Eigen::Vector3d(0.0, 0.2, 0);
+    auto shardlow = scheme("Shardlow");
+    for (int k = 0; k < 20; ++k) shardlow->step(sys);
+    EXPECT_EQ(largestForceDifference(sys, computeConservativeForces), 0.0) << "the same loop, the same bits";
+    // And these are not the full DPD forces.
+    EXPECT_GT(largestForceDifference(sys, fullForces), 1.0);
+}
