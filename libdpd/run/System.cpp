@@ -58,7 +58,7 @@ void System::wrapPositions() {
     }
 }
 
-void System::sortByCell() { cells_.sortParticles(particles); }
+void System::sortByCell() { cells_.sortParticles(particles, frozenOfSpecies_); }
 
 void System::computeForces() {
     if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
