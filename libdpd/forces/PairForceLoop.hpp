@@ -7,12 +7,18 @@
 // slab when the count is odd. No two threads ever write the same particle, and every particle
 // receives its contributions in an order fixed by the cell layout alone: forces, and so trajectories,
 // are bit-identical on any number of threads.
+//
+// Inside a slab the work goes by columns of cells (ix, iy fixed) in three passes (PairForceLoop.tpp):
+// find the pairs within the cutoff, evaluate the force of each in a loop the compiler vectorises
+// (random numbers included), then add the forces to the particles in the order the pairs were found.
+// Frozen-frozen pairs are not even visited when the cell list keeps frozen particles apart.
 #include "core/Particles.hpp"
 #include "core/Species.hpp"
 #include "forces/DpdPairForce.hpp"
 #include "neighbour/CellList.hpp"
 #include "random/PairRandom.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -33,8 +39,14 @@ struct PairLoopContext {
     std::uint64_t step;
 };
 
+// Adds to p.f the force of every interacting pair closer than the cutoff. The evaluator gives the
+// force over r for one pair: double forceOverR(double r2, double rDotV, const PairCoeffs&, double zeta),
+// zeta being ctx.random.pairUniform(step, id_i, id_j). The particles must be sorted by ctx.cells.
 template <class Evaluator>
 void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff);
+
+// Bytes held by the pair loop's per-thread pair buffers (all threads together).
+std::size_t pairLoopScratchBytes();
 
 }  // namespace dpd
 

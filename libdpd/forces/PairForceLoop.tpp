@@ -1,69 +1,208 @@
 // Implementation of accumulatePairForces (included by PairForceLoop.hpp).
-#include <omp.h>
+#include "forces/PairBatch.hpp"
+#include "forces/PairLoopPlan.hpp"
+#include "forces/PairSearch.hpp"
+
+#include <algorithm>
 
 namespace dpd {
 namespace detail {
 
-// All pairs between the particles of cell a and cell b, whose particles stand at r_j + image.
-template <class Evaluator>
-inline void cellPairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff2,
-                           std::uint32_t aBegin, std::uint32_t aEnd, std::uint32_t bBegin, std::uint32_t bEnd,
-                           bool sameCell, const Eigen::Vector3d& image) {
-    const double* __restrict rx = p.rx.data();
-    const double* __restrict ry = p.ry.data();
-    const double* __restrict rz = p.rz.data();
+// A run of neighbour particles [begin, end) standing at r_j + image: consecutive stencil cells that
+// are also consecutive in memory (the z neighbours of a row, mostly) make one run.
+struct NeighbourRun {
+    std::uint32_t begin, end;
+    double imageX, imageY, imageZ;
+};
+
+// The runs of the half stencil of cell (ix, iy, iz), the cell itself first. For a frozen particle only
+// the mobile part of each cell counts (when the plan skips frozen pairs). Returns the number of runs.
+inline int neighbourRuns(const CellList& cl, const std::vector<StencilEntry>& stencil, int ix, int iy, int iz,
+                         bool mobileOnly, NeighbourRun* runs) {
+    const auto& n = cl.cellsPerAxis();
+    const Eigen::Vector3d L = cl.box().length();
+    int count = 0;
+    for (const StencilEntry& s : stencil) {
+        int jx = ix + s.dx, jy = iy + s.dy, jz = iz + s.dz;
+        // Periodic images: when the neighbour index wraps, its particles stand one box length away.
+        double imx = 0.0, imy = 0.0, imz = 0.0;
+        if (jx >= n[0]) { jx -= n[0]; imx = L.x(); }
+        if (jy >= n[1]) { jy -= n[1]; imy = L.y(); } else if (jy < 0) { jy += n[1]; imy = -L.y(); }
+        if (jz >= n[2]) { jz -= n[2]; imz = L.z(); } else if (jz < 0) { jz += n[2]; imz = -L.z(); }
+        const int b = cl.cellIndex(jx, jy, jz);
+        const std::uint32_t begin = cl.cellStart(b), end = mobileOnly ? cl.mobileEnd(b) : cl.cellStart(b + 1);
+        NeighbourRun* last = count > 0 ? &runs[count - 1] : nullptr;
+        if (last && last->end == begin && last->imageX == imx && last->imageY == imy && last->imageZ == imz)
+            last->end = end;
+        else
+            runs[count++] = {begin, end, imx, imy, imz};
+    }
+    return count;
+}
+
+// Keeps, of the pairs [first, end) of particle i, those whose species interact; returns the new end.
+inline std::size_t dropNonInteracting(const Particles& p, const PairLoopPlan& plan, PairBatch& batch,
+                                      std::size_t first, std::size_t end) {
+    if (first == end) return end;
+    const std::uint8_t* interactsI = &plan.interacts[p.species[batch.i[first]] * plan.nSpecies];
+    std::size_t kept = first;
+    for (std::size_t k = first; k < end; ++k) {
+        if (!interactsI[p.species[batch.j[k]]]) continue;
+        batch.j[kept] = batch.j[k];
+        batch.dx[kept] = batch.dx[k]; batch.dy[kept] = batch.dy[k]; batch.dz[kept] = batch.dz[k];
+        ++kept;
+    }
+    return kept;
+}
+
+// Pass 1: the pairs (i in cell a, j in its half stencil) closer than the cutoff, appended to the
+// batch (PairSearch.hpp). With kFilter the pairs of species that do not interact are dropped again.
+template <bool kFilter>
+inline void findCellPairs(const Particles& p, const CellList& cl, const PairLoopPlan& plan,
+                          const std::vector<StencilEntry>& stencil, double cutoff2, int ix, int iy, int iz,
+                          PairBatch& batch) {
+    const int a = cl.cellIndex(ix, iy, iz);
+    const std::uint32_t aBegin = cl.cellStart(a), aEnd = cl.cellStart(a + 1);
+    if (aBegin == aEnd) return;
+    const std::uint32_t aMobileEnd = plan.skipFrozenPairs ? cl.mobileEnd(a) : aEnd;
+    NeighbourRun all[32], mobile[32];
+    const int nAll = neighbourRuns(cl, stencil, ix, iy, iz, false, all);
+    const int nMobile = aMobileEnd < aEnd ? neighbourRuns(cl, stencil, ix, iy, iz, true, mobile) : 0;
+    std::size_t candidates = 0;
+    for (int r = 0; r < nAll; ++r) candidates += all[r].end - all[r].begin;
+    batch.reserveMore(candidates * (aEnd - aBegin) + 3);
+
+    const double* rx = p.rx.data();
+    const double* ry = p.ry.data();
+    const double* rz = p.rz.data();
+    const PairSearchOutput out{batch.i.data(), batch.j.data(), batch.dx.data(), batch.dy.data(), batch.dz.data()};
+    std::size_t k = batch.size;
+    for (std::uint32_t i = aBegin; i < aEnd; ++i) {
+        const bool frozenI = i >= aMobileEnd;
+        const NeighbourRun* runs = frozenI ? mobile : all;
+        const int nRuns = frozenI ? nMobile : nAll;
+        const std::size_t first = k;
+        for (int r = 0; r < nRuns; ++r) {
+            const NeighbourRun& run = runs[r];
+            // The first run starts with cell a itself: only the partners after i.
+            const std::uint32_t jBegin = r == 0 ? std::max(run.begin, i + 1) : run.begin;
+            k = appendPairsWithinCutoff(i, rx[i] - run.imageX, ry[i] - run.imageY, rz[i] - run.imageZ, jBegin,
+                                        run.end, rx, ry, rz, cutoff2, out, k);
+        }
+        if constexpr (kFilter) k = dropNonInteracting(p, plan, batch, first, k);
+    }
+    batch.size = k;
+}
+
+// Pass 2: what the force needs beyond the separation, gathered per pair (relative velocity along
+// the separation, the ordered ids, the coefficients when they differ), the random numbers of all the
+// pairs at once (eight Philox counters per instruction), then the force over r of every pair in one
+// loop over contiguous arrays, which the compiler vectorises.
+template <bool kCommon, class Evaluator>
+inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan,
+                          const Evaluator& eval, PairBatch& batch) {
+    const std::size_t n = batch.size;
     const double* __restrict vx = p.vx.data();
     const double* __restrict vy = p.vy.data();
     const double* __restrict vz = p.vz.data();
-    double* __restrict fx = p.fx.data();
-    double* __restrict fy = p.fy.data();
-    double* __restrict fz = p.fz.data();
     const std::uint64_t* __restrict id = p.id.data();
     const std::uint8_t* __restrict sp = p.species.data();
-    for (std::uint32_t i = aBegin; i < aEnd; ++i) {
-        const double xi = rx[i] - image.x(), yi = ry[i] - image.y(), zi = rz[i] - image.z();
-        double fxi = 0.0, fyi = 0.0, fzi = 0.0;
-        const PairCoeffs* row = &ctx.table(sp[i], 0);
-        for (std::uint32_t j = sameCell ? i + 1 : bBegin; j < bEnd; ++j) {
-            const double dx = xi - rx[j], dy = yi - ry[j], dz = zi - rz[j];
-            const double r2 = dx * dx + dy * dy + dz * dz;
-            if (r2 >= cutoff2) continue;
-            const PairCoeffs& c = row[sp[j]];
-            if (!c.interact) continue;  // frozen-frozen pairs, for example
-            const double rDotV = dx * (vx[i] - vx[j]) + dy * (vy[i] - vy[j]) + dz * (vz[i] - vz[j]);
-            const double zeta = ctx.random.pairUniform(ctx.step, id[i], id[j]);
-            const double s = eval.forceOverR(r2, rDotV, c, zeta);
-            fxi += s * dx; fyi += s * dy; fzi += s * dz;
-            fx[j] -= s * dx; fy[j] -= s * dy; fz[j] -= s * dz;
+    const std::uint32_t* __restrict bi = batch.i.data();
+    const std::uint32_t* __restrict bj = batch.j.data();
+    const double* __restrict bdx = batch.dx.data();
+    const double* __restrict bdy = batch.dy.data();
+    const double* __restrict bdz = batch.dz.data();
+    double* __restrict rDotV = batch.rDotV.data();
+    std::uint32_t* __restrict idLo = batch.idLo.data();
+    std::uint32_t* __restrict idHi = batch.idHi.data();
+    double* __restrict ca = batch.a.data();
+    double* __restrict cg = batch.gamma.data();
+    double* __restrict cs = batch.sigma.data();
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t i = bi[k], j = bj[k];
+        rDotV[k] = bdx[k] * (vx[i] - vx[j]) + bdy[k] * (vy[i] - vy[j]) + bdz[k] * (vz[i] - vz[j]);
+        const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
+        idLo[k] = static_cast<std::uint32_t>(lo);
+        idHi[k] = static_cast<std::uint32_t>(hi);
+        if constexpr (!kCommon) {
+            const PairCoeffs& c = ctx.table(sp[i], sp[j]);
+            ca[k] = c.a; cg[k] = c.gamma; cs[k] = c.sigma;
         }
-        fx[i] += fxi; fy[i] += fyi; fz[i] += fzi;
+    }
+    double* __restrict zeta = batch.zeta.data();
+    ctx.random.orderedPairUniforms(ctx.step, idLo, idHi, zeta, n);
+    double* __restrict s = batch.forceOverR.data();
+    const PairCoeffs common = plan.common;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double r2 = bdx[k] * bdx[k] + bdy[k] * bdy[k] + bdz[k] * bdz[k];
+        if constexpr (kCommon) {
+            s[k] = eval.forceOverR(r2, rDotV[k], common, zeta[k]);
+        } else {
+            const PairCoeffs c{ca[k], cg[k], cs[k], true};
+            s[k] = eval.forceOverR(r2, rDotV[k], c, zeta[k]);
+        }
     }
 }
 
-template <class Evaluator>
-void slabPairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff2, int ix,
-                    const std::vector<StencilEntry>& stencil) {
+// Pass 3: the forces added to both particles of every pair, in the order the pairs were found. The
+// pairs of one particle i come together, so its share is summed in registers and stored once per run.
+inline void scatterBatch(Particles& p, const PairBatch& batch) {
+    const std::size_t n = batch.size;
+    if (n == 0) return;
+    double* __restrict fx = p.fx.data();
+    double* __restrict fy = p.fy.data();
+    double* __restrict fz = p.fz.data();
+    const std::uint32_t* __restrict bi = batch.i.data();
+    const std::uint32_t* __restrict bj = batch.j.data();
+    const double* __restrict bdx = batch.dx.data();
+    const double* __restrict bdy = batch.dy.data();
+    const double* __restrict bdz = batch.dz.data();
+    const double* __restrict s = batch.forceOverR.data();
+    std::uint32_t current = bi[0];
+    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (bi[k] != current) {
+            fx[current] += fxi; fy[current] += fyi; fz[current] += fzi;
+            fxi = fyi = fzi = 0.0;
+            current = bi[k];
+        }
+        const double gx = s[k] * bdx[k], gy = s[k] * bdy[k], gz = s[k] * bdz[k];
+        fxi += gx; fyi += gy; fzi += gz;
+        const std::uint32_t j = bj[k];
+        fx[j] -= gx; fy[j] -= gy; fz[j] -= gz;
+    }
+    fx[current] += fxi; fy[current] += fyi; fz[current] += fzi;
+}
+
+template <bool kFilter, bool kCommon, class Evaluator>
+void slabPairForces(Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan, const Evaluator& eval,
+                    double cutoff2, int ix, const std::vector<StencilEntry>& stencil) {
     const CellList& cl = ctx.cells;
     const auto& n = cl.cellsPerAxis();
-    const Eigen::Vector3d L = cl.box().length();
-    for (int iy = 0; iy < n[1]; ++iy)
-        for (int iz = 0; iz < n[2]; ++iz) {
-            const int a = cl.cellIndex(ix, iy, iz);
-            const std::uint32_t aBegin = cl.cellStart(a), aEnd = cl.cellStart(a + 1);
-            if (aBegin == aEnd) continue;
-            for (const StencilEntry& s : stencil) {
-                int jx = ix + s.dx, jy = iy + s.dy, jz = iz + s.dz;
-                // Periodic images: when the neighbour index wraps, its particles stand one box
-                // length away, r_j + image.
-                Eigen::Vector3d image(0, 0, 0);
-                if (jx >= n[0]) { jx -= n[0]; image.x() = L.x(); }
-                if (jy >= n[1]) { jy -= n[1]; image.y() = L.y(); } else if (jy < 0) { jy += n[1]; image.y() = -L.y(); }
-                if (jz >= n[2]) { jz -= n[2]; image.z() = L.z(); } else if (jz < 0) { jz += n[2]; image.z() = -L.z(); }
-                const int b = cl.cellIndex(jx, jy, jz);
-                cellPairForces(p, ctx, eval, cutoff2, aBegin, aEnd, cl.cellStart(b), cl.cellStart(b + 1), b == a,
-                               image);
-            }
-        }
+    PairBatch& batch = threadPairBatch();
+    for (int iy = 0; iy < n[1]; ++iy) {
+        batch.size = 0;
+        for (int iz = 0; iz < n[2]; ++iz) findCellPairs<kFilter>(p, cl, plan, stencil, cutoff2, ix, iy, iz, batch);
+        evaluateBatch<kCommon>(p, ctx, plan, eval, batch);
+        scatterBatch(p, batch);
+    }
+}
+
+template <bool kFilter, bool kCommon, class Evaluator>
+void colouredSlabs(Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan, const Evaluator& eval,
+                   double cutoff2, const std::vector<StencilEntry>& stencil) {
+    const int nx = ctx.cells.cellsPerAxis()[0];
+    // Colour 0: even slabs (excluding the last one when nx is odd), colour 1: odd slabs, colour 2:
+    // the last slab when nx is odd (it writes into slab 0 through the periodic boundary).
+    const int lastEven = (nx % 2 == 0) ? nx : nx - 1;
+    const int first[3] = {0, 1, lastEven};
+    const int end[3] = {lastEven, nx, nx};
+    for (int colour = 0; colour < 3; ++colour) {
+        const int count = (end[colour] - first[colour] + 1) / 2;
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int k = 0; k < count; ++k)
+            slabPairForces<kFilter, kCommon>(p, ctx, plan, eval, cutoff2, first[colour] + 2 * k, stencil);
+    }
 }
 
 }  // namespace detail
@@ -71,19 +210,16 @@ void slabPairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& e
 template <class Evaluator>
 void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff) {
     const std::vector<StencilEntry> stencil = halfStencil(ctx.cells.box());
-    const int nx = ctx.cells.cellsPerAxis()[0];
+    const PairLoopPlan plan = makePairLoopPlan(ctx.table, ctx.cells);
     const double cutoff2 = cutoff * cutoff;
-    // Colour 0: even slabs (excluding the last one when nx is odd), colour 1: odd slabs, colour 2:
-    // the last slab when nx is odd (it writes into slab 0 through the periodic boundary).
-    const int lastEven = (nx % 2 == 0) ? nx : nx - 1;
-    for (int colour = 0; colour < 3; ++colour) {
-        std::vector<int> slabs;
-        if (colour == 0) for (int ix = 0; ix < lastEven; ix += 2) slabs.push_back(ix);
-        if (colour == 1) for (int ix = 1; ix < nx; ix += 2) slabs.push_back(ix);
-        if (colour == 2 && nx % 2 == 1) slabs.push_back(nx - 1);
-        const int count = static_cast<int>(slabs.size());
-#pragma omp parallel for schedule(dynamic, 1)
-        for (int k = 0; k < count; ++k) detail::slabPairForces(p, ctx, eval, cutoff2, slabs[k], stencil);
+    // The two switches pick the loop once per call: a species check per candidate only where some
+    // pair the layout does not skip is non-interacting, per-pair coefficients only where they differ.
+    if (plan.filterInteracting) {
+        if (plan.commonCoefficients) detail::colouredSlabs<true, true>(p, ctx, plan, eval, cutoff2, stencil);
+        else detail::colouredSlabs<true, false>(p, ctx, plan, eval, cutoff2, stencil);
+    } else {
+        if (plan.commonCoefficients) detail::colouredSlabs<false, true>(p, ctx, plan, eval, cutoff2, stencil);
+        else detail::colouredSlabs<false, false>(p, ctx, plan, eval, cutoff2, stencil);
     }
 }
 

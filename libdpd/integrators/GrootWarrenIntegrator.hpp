@@ -17,6 +17,8 @@ public:
     std::string name() const override { return "GrootWarren"; }
     double lambda() const { return lambda_; }
     WallCounters step(System& sys) override;
+    // Bytes held by the integrator's own buffers.
+    std::size_t memoryBytes() const { return sizeof(double) * (hx_.capacity() + hy_.capacity() + hz_.capacity()); }
 
 private:
     double lambda_;

@@ -24,7 +24,7 @@ void CellList::setup(const Box& box, double cutoff) {
         size_[a] = L[a] / n_[a];
         invSize_[a] = 1.0 / size_[a];
     }
-    start_.assign(numCells() + 1, 0);
+    start_.assign(2 * static_cast<std::size_t>(numCells()) + 1, 0);
 }
 
 int CellList::axisCell(double x, int axis) const {
@@ -34,21 +34,60 @@ int CellList::axisCell(double x, int axis) const {
 }
 
 void CellList::sortParticles(Particles& p) {
-    const std::size_t n = p.size();
-    cellOf_.resize(n);
-    std::fill(start_.begin(), start_.end(), 0);
-    for (std::size_t i = 0; i < n; ++i) {
+    frozenOfSpecies_.clear();
+    sort(p);
+}
+
+void CellList::sortParticles(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies) {
+    frozenOfSpecies_ = frozenOfSpecies;
+    // No frozen species: the plain sort, and the pair loop need not look for frozen parts.
+    if (std::none_of(frozenOfSpecies_.begin(), frozenOfSpecies_.end(), [](std::uint8_t f) { return f != 0; }))
+        frozenOfSpecies_.clear();
+    sort(p);
+}
+
+template <class T>
+void CellList::gather(std::vector<T>& a, std::vector<T>& scratch) const {
+    const long n = static_cast<long>(order_.size());
+#pragma omp single
+    scratch.resize(a.size());
+#pragma omp for schedule(static)
+    for (long k = 0; k < n; ++k) scratch[k] = a[order_[k]];
+    // The implicit barrier of the loop above: every thread is done before the buffers trade places.
+#pragma omp single
+    a.swap(scratch);
+}
+
+void CellList::sort(Particles& p) {
+    const long n = static_cast<long>(p.size());
+    keyOf_.resize(n);
+    order_.resize(n);
+    // Key 2c for the mobile particles of cell c, 2c + 1 for its frozen ones.
+    const bool split = splitsFrozen();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
         const int c = cellIndex(axisCell(p.rx[i], 0), axisCell(p.ry[i], 1), axisCell(p.rz[i], 2));
-        cellOf_[i] = static_cast<std::uint32_t>(c);
-        ++start_[c + 1];
+        keyOf_[i] = 2 * static_cast<std::uint32_t>(c) + (split && isFrozenSpecies(p.species[i]) ? 1u : 0u);
     }
-    for (int c = 0; c < numCells(); ++c) start_[c + 1] += start_[c];
+    std::fill(start_.begin(), start_.end(), 0);
+    for (long i = 0; i < n; ++i) ++start_[keyOf_[i] + 1];
+    for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
     // Stable counting sort: particles keep their relative order inside a cell, so the layout (and
     // with it the summation order of forces) is a function of the state alone.
-    order_.resize(n);
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) order_[fill[cellOf_[i]]++] = static_cast<std::uint32_t>(i);
-    p.permute(order_);
+    fill_.assign(start_.begin(), start_.end() - 1);
+    for (long i = 0; i < n; ++i) order_[fill_[keyOf_[i]]++] = static_cast<std::uint32_t>(i);
+#pragma omp parallel
+    {
+        for (auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) gather(*a, scratch_);
+        gather(p.id, idScratch_);
+        gather(p.species, speciesScratch_);
+    }
+}
+
+std::size_t CellList::memoryBytes() const {
+    return sizeof(std::uint32_t) * (start_.capacity() + keyOf_.capacity() + order_.capacity() + fill_.capacity()) +
+           frozenOfSpecies_.capacity() + sizeof(double) * scratch_.capacity() +
+           sizeof(std::uint64_t) * idScratch_.capacity() + speciesScratch_.capacity();
 }
 
 }  // namespace dpd

@@ -6,10 +6,14 @@
 // memory and a cell's neighbours are few contiguous runs. Cells are numbered with x slowest, so a
 // slab of constant x is one contiguous range of cells: the pair loop colours these slabs to run in
 // parallel without races and with a summation order that does not depend on the thread count.
+//
+// Given which species are frozen, the sort also puts a cell's mobile particles before its frozen
+// ones, so the pair loop can pass frozen-frozen pairs (which never interact) without visiting them.
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,25 +24,49 @@ public:
     // Lays out the grid for a box and cutoff. Throws std::invalid_argument if an active axis has fewer
     // than three cells (the half stencil would then meet the same neighbour twice).
     void setup(const Box& box, double cutoff);
-    // Reorders the particles by cell and records where each cell starts.
+    // Reorders the particles by cell and records where each cell starts. Every particle counts as
+    // mobile.
     void sortParticles(Particles& p);
+    // The same, with the mobile particles of each cell before the frozen ones (frozenOfSpecies[s] != 0
+    // for a frozen species s).
+    void sortParticles(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies);
 
     const std::array<int, 3>& cellsPerAxis() const { return n_; }
     int cellIndex(int ix, int iy, int iz) const { return (ix * n_[1] + iy) * n_[2] + iz; }
     int numCells() const { return n_[0] * n_[1] * n_[2]; }
-    // Particles of cell c are [cellStart(c), cellStart(c + 1)).
-    std::uint32_t cellStart(int c) const { return start_[c]; }
+    // Particles of cell c are [cellStart(c), cellStart(c + 1)); the mobile ones are
+    // [cellStart(c), mobileEnd(c)), the frozen ones [mobileEnd(c), cellStart(c + 1)).
+    std::uint32_t cellStart(int c) const { return start_[2 * c]; }
+    std::uint32_t mobileEnd(int c) const { return start_[2 * c + 1]; }
+    // Whether the last sort split the cells into mobile and frozen parts, and which species it took
+    // as frozen.
+    bool splitsFrozen() const { return !frozenOfSpecies_.empty(); }
+    bool isFrozenSpecies(int s) const {
+        return s < static_cast<int>(frozenOfSpecies_.size()) && frozenOfSpecies_[s] != 0;
+    }
     const Box& box() const { return box_; }
     const Eigen::Vector3d& cellSize() const { return size_; }
+    // Bytes held (capacities of the cell starts, the sort keys and order, and the sort's scratch).
+    std::size_t memoryBytes() const;
 
 private:
     int axisCell(double x, int axis) const;
+    void sort(Particles& p);
+    template <class T>
+    void gather(std::vector<T>& a, std::vector<T>& scratch) const;
+
     Box box_;
     std::array<int, 3> n_{1, 1, 1};
     Eigen::Vector3d size_{1, 1, 1};
     Eigen::Vector3d invSize_{1, 1, 1};
+    // start_[2c] is where cell c starts, start_[2c + 1] where its frozen part starts.
     std::vector<std::uint32_t> start_;
-    std::vector<std::uint32_t> cellOf_, order_;
+    std::vector<std::uint8_t> frozenOfSpecies_;
+    // Kept between sorts, so a step allocates nothing.
+    std::vector<std::uint32_t> keyOf_, order_, fill_;
+    std::vector<double> scratch_;
+    std::vector<std::uint64_t> idScratch_;
+    std::vector<std::uint8_t> speciesScratch_;
 };
 
 }  // namespace dpd

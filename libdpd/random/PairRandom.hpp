@@ -8,6 +8,7 @@
 #include "random/Philox.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace dpd {
@@ -20,11 +21,29 @@ public:
     double pairUniform(std::uint64_t step, std::uint64_t idA, std::uint64_t idB) const {
         const std::uint64_t lo = idA < idB ? idA : idB;
         const std::uint64_t hi = idA < idB ? idB : idA;
-        // Ids up to 2^32 each; the step fills the other two words (64-bit steps).
-        const PhiloxCounter c{static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi),
-                              static_cast<std::uint32_t>(step), static_cast<std::uint32_t>(step >> 32) ^ kPairStream};
-        const std::uint32_t bits = philox4x32(c, key_)[0];
-        return kSqrt12 * (uniformOpen01(bits) - 0.5);
+        return orderedPairUniform(step, static_cast<std::uint32_t>(lo), static_cast<std::uint32_t>(hi));
+    }
+
+    // The same variate for ids already ordered (lo the lower) and cut to their low 32 bits: ids up to
+    // 2^32 each, the step fills the other two counter words (64-bit steps). Branch-free and made of
+    // 32-bit words only, so a loop over many pairs vectorises (the pair loop calls it that way).
+    double orderedPairUniform(std::uint64_t step, std::uint32_t lo, std::uint32_t hi) const {
+        const PhiloxCounter c{lo, hi, static_cast<std::uint32_t>(step), static_cast<std::uint32_t>(step >> 32) ^ kPairStream};
+        return unitVarianceUniform(philox4x32(c, key_)[0]);
+    }
+
+    // orderedPairUniform for n pairs at once: zeta[k] for (lo[k], hi[k]), the same numbers to the bit
+    // (Philox on eight pairs per instruction where the CPU has AVX2).
+    void orderedPairUniforms(std::uint64_t step, const std::uint32_t* lo, const std::uint32_t* hi, double* zeta,
+                             std::size_t n) const;
+
+    // sqrt(12) (u - 1/2) with u = (bits + 1/2) 2^-32, written through a signed conversion
+    // ((int) (bits ^ 2^31) = bits - 2^31 exactly), which vector units have and the unsigned one lacks
+    // before AVX-512. Every step is exact but the last product, so the value is the same as the
+    // textbook form to the bit.
+    static double unitVarianceUniform(std::uint32_t bits) {
+        const auto centred = static_cast<std::int32_t>(bits ^ 0x80000000u);
+        return (static_cast<double>(centred) + 0.5) * (kSqrt12 * 0x1p-32);
     }
 
     // Standard normal variate for the pair (idA, idB) at a step, symmetric in the two ids, from a

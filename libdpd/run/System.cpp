@@ -2,6 +2,7 @@
 
 #include "forces/PairForceLoop.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -14,6 +15,21 @@ void pairKernel(Particles& p, const PairLoopContext& ctx, const PairForceParamet
     const DpdPairEvaluator<kConservative, kStandardWeight> eval(params);
     accumulatePairForces(p, ctx, eval, params.cutoff);
 }
+
+// Adds the seconds from construction to destruction to *total, when total is set.
+class ScopedTimer {
+public:
+    explicit ScopedTimer(double* total) : total_(total) {
+        if (total_) start_ = std::chrono::steady_clock::now();
+    }
+    ~ScopedTimer() {
+        if (total_) *total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    double* total_;
+    std::chrono::steady_clock::time_point start_;
+};
 
 }  // namespace
 
@@ -49,6 +65,7 @@ void System::initialise() {
 }
 
 void System::wrapPositions() {
+    const ScopedTimer timer(stepTimes ? &stepTimes->wrap : nullptr);
     const long n = static_cast<long>(particles.size());
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
@@ -58,10 +75,14 @@ void System::wrapPositions() {
     }
 }
 
-void System::sortByCell() { cells_.sortParticles(particles); }
+void System::sortByCell() {
+    const ScopedTimer timer(stepTimes ? &stepTimes->sort : nullptr);
+    cells_.sortParticles(particles, frozenOfSpecies_);
+}
 
 void System::computeForces() {
     if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
+    const ScopedTimer timer(stepTimes ? &stepTimes->forces : nullptr);
     particles.clearForces();
     const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step)};
     pairKernel_(particles, ctx, forceParameters);
@@ -70,6 +91,7 @@ void System::computeForces() {
 
 WallCounters System::applyWalls() {
     if (walls.empty()) return {};
+    const ScopedTimer timer(stepTimes ? &stepTimes->walls : nullptr);
     return walls.reflect(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
                          forceParameters.kT);
 }

@@ -17,6 +17,15 @@ namespace dpd {
 
 struct PairLoopContext;
 
+// Seconds spent in the parts of a step that System does itself, summed over the steps while a
+// System's stepTimes points here (dpdBenchmark's breakdown; off, and free, by default).
+struct StepTimes {
+    double wrap = 0.0;    // wrapPositions
+    double sort = 0.0;    // sortByCell
+    double forces = 0.0;  // computeForces: pair forces and body force
+    double walls = 0.0;   // applyWalls
+};
+
 class System {
 public:
     Box box;
@@ -29,6 +38,7 @@ public:
     WallSet walls;
     std::int64_t step = 0;
     double time = 0.0;
+    StepTimes* stepTimes = nullptr;  // when set, the methods below add their times to it
 
     // Call once the fields above are set: lays out the cells, fixes sigma from fluctuation-
     // dissipation, marks frozen pairs as non-interacting, and picks the pair evaluator that does just

@@ -79,6 +79,17 @@ Particles randomParticles(const Box& box, double density, std::uint64_t seed) {
     return p;
 }
 
+// The loop visited exactly the expected pairs: the same multiset of (noise fingerprint, distance).
+void expectSamePairs(std::vector<PairRecord> visited, std::vector<PairRecord> expected) {
+    std::sort(visited.begin(), visited.end());
+    std::sort(expected.begin(), expected.end());
+    ASSERT_EQ(visited.size(), expected.size()) << "pairs visited by the loop vs brute force";
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+        ASSERT_EQ(visited[k].zeta, expected[k].zeta) << "pair " << k;
+        ASSERT_NEAR(visited[k].r2, expected[k].r2, 1e-12) << "pair " << k;
+    }
+}
+
 struct BrutePair {
     std::size_t i, j;
     Eigen::Vector3d rij;  // minimum image r_i - r_j
@@ -158,13 +169,8 @@ void checkCaseOnThreads(const Case& cs) {
         ASSERT_GT(std::abs(b.rij.squaredNorm() - cs.cutoff * cs.cutoff), 1e-9);
     }
     ASSERT_GT(expected.size(), 100u);  // the boxes hold enough pairs for the check to mean something
-    std::sort(visited.begin(), visited.end());
-    std::sort(expected.begin(), expected.end());
-    ASSERT_EQ(visited.size(), expected.size()) << "pairs visited by the loop vs brute force";
-    for (std::size_t k = 0; k < expected.size(); ++k) {
-        ASSERT_EQ(visited[k].zeta, expected[k].zeta) << "pair " << k;
-        ASSERT_NEAR(visited[k].r2, expected[k].r2, 1e-12) << "pair " << k;
-    }
+    expectSamePairs(visited, expected);
+    if (::testing::Test::HasFatalFailure()) return;
 
     // 2. Full DPD forces against the brute-force sum of the same evaluator.
     PairForceParameters params;
@@ -248,3 +254,90 @@ TEST(CellList, SetupThrowsForBoxesShorterThanThreeCutoffs) {
     box.hi = Eigen::Vector3d(2.5, 1, 5);
     EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
 }
+
+// Frozen particles and species that differ. Three species: 0 mobile, 1 frozen, 2 frozen. The pairs of
+// frozen species are non-interacting, as System makes them; with `extraNonInteracting` the pair
+// (0, 2) is non-interacting too, which the layout cannot skip, so the loop must look the species up.
+// The coefficients differ between pairs, so the loop takes them per pair. On one thread and on two:
+//  - the sort puts every cell's mobile particles before its frozen ones;
+//  - the visited pairs are exactly the brute-force pairs that interact (frozen-frozen ones never
+//    reach the evaluator);
+//  - the forces equal the brute-force sum with each pair's own coefficients.
+namespace {
+
+void checkMixedSpecies(bool extraNonInteracting) {
+    Box box;
+    box.lo = Eigen::Vector3d(0, 0, 0);
+    box.hi = Eigen::Vector3d(6.3, 4.2, 5.5);
+    Particles p = randomParticles(box, 3.0, 77);
+    // Frozen species in blocks of space (a wall-like slab at low z) and scattered by id.
+    for (std::size_t k = 0; k < p.size(); ++k)
+        p.species[k] = p.rz[k] < 1.5 ? 1 : (p.id[k] % 5 == 0 ? 2 : 0);
+    const std::vector<std::uint8_t> frozen{0, 1, 1};
+    PairTable table(3);
+    table.set(0, 0, {25.0, 4.5, 3.0, true});
+    table.set(0, 1, {30.0, 6.0, 3.5, true});
+    table.set(0, 2, {10.0, 2.0, 2.0, !extraNonInteracting});
+    table.set(1, 1, {25.0, 4.5, 3.0, false});
+    table.set(1, 2, {25.0, 4.5, 3.0, false});
+    table.set(2, 2, {25.0, 4.5, 3.0, false});
+    const PairRandom random(99);
+    const std::uint64_t step = 3;
+    PairForceParameters params;
+    params.dt = 0.04;
+    const DpdPairEvaluator<true, true> eval(params);
+
+    const int saved = omp_get_max_threads();
+    for (int threads : {1, 2}) {
+        SCOPED_TRACE(threads == 1 ? "1 thread" : "2 threads");
+        omp_set_num_threads(threads);
+        Particles q = p;
+        CellList cells;
+        cells.setup(box, 1.0);
+        cells.sortParticles(q, frozen);
+        ASSERT_TRUE(cells.splitsFrozen());
+        for (int c = 0; c < cells.numCells(); ++c) {
+            ASSERT_LE(cells.cellStart(c), cells.mobileEnd(c));
+            ASSERT_LE(cells.mobileEnd(c), cells.cellStart(c + 1));
+            for (std::uint32_t k = cells.cellStart(c); k < cells.cellStart(c + 1); ++k)
+                ASSERT_EQ(frozen[q.species[k]] != 0, k >= cells.mobileEnd(c)) << "cell " << c;
+        }
+        const PairLoopContext ctx{cells, table, random, step};
+        std::vector<std::vector<PairRecord>> perThread(omp_get_max_threads());
+        accumulatePairForces(q, ctx, RecordingEvaluator{&perThread}, 1.0);
+        std::vector<PairRecord> visited;
+        for (const auto& v : perThread) visited.insert(visited.end(), v.begin(), v.end());
+        std::vector<PairRecord> expected;
+        std::vector<Eigen::Vector3d> f(q.size(), Eigen::Vector3d::Zero());
+        long frozenPairs = 0;
+        for (const auto& b : bruteForcePairs(q, box, 1.0)) {
+            const PairCoeffs& c = table(q.species[b.i], q.species[b.j]);
+            frozenPairs += frozen[q.species[b.i]] && frozen[q.species[b.j]];
+            if (!c.interact) continue;
+            const double zeta = random.pairUniform(step, q.id[b.i], q.id[b.j]);
+            expected.push_back({zeta, b.rij.squaredNorm()});
+            const Eigen::Vector3d dv(q.vx[b.i] - q.vx[b.j], q.vy[b.i] - q.vy[b.j], q.vz[b.i] - q.vz[b.j]);
+            const double s = eval.forceOverR(b.rij.squaredNorm(), b.rij.dot(dv), c, zeta);
+            f[b.i] += s * b.rij;
+            f[b.j] -= s * b.rij;
+        }
+        ASSERT_GT(frozenPairs, 100) << "the box must hold frozen-frozen pairs for the test to mean much";
+        expectSamePairs(visited, expected);
+        if (::testing::Test::HasFatalFailure()) break;
+        q.clearForces();
+        accumulatePairForces(q, ctx, eval, 1.0);
+        // Tolerance as in checkCaseOnThreads: round-off of order 1e-13, a missing pair of order 1.
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            EXPECT_NEAR(q.fx[i], f[i].x(), 1e-9) << "particle id " << q.id[i];
+            EXPECT_NEAR(q.fy[i], f[i].y(), 1e-9) << "particle id " << q.id[i];
+            EXPECT_NEAR(q.fz[i], f[i].z(), 1e-9) << "particle id " << q.id[i];
+        }
+    }
+    omp_set_num_threads(saved);
+}
+
+}  // namespace
+
+TEST(CellList, FrozenPairsAreNeverVisitedAndPerPairCoefficientsAreUsed) { checkMixedSpecies(false); }
+
+TEST(CellList, NonInteractingMobilePairsAreFilteredBySpecies) { checkMixedSpecies(true); }

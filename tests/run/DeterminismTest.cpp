@@ -68,8 +68,10 @@ StandardFluidSettings fluid2D(std::uint64_t seed) {
 
 // A channel: fcc frozen walls behind z = 1 (maxwellian reflection, at rest) and z = 10 (bounce-back,
 // sliding at 0.5 along x), fluid between, a body force along x. 9 x 5 x 11 cells. Exercises frozen
-// particles, reflections with random draws, and the body force.
-System channel(std::uint64_t seed) {
+// particles (kept after the mobile ones in each cell, frozen-frozen pairs never visited), reflections
+// with random draws, and the body force. With fluidWallA other than 25 the pair coefficients differ
+// between pairs, and the pair loop takes them per pair (another path through it).
+System channel(std::uint64_t seed, double fluidWallA = 25.0) {
     System sys;
     sys.box.lo = Eigen::Vector3d(0, 0, 0);
     sys.box.hi = Eigen::Vector3d(9.5, 5.2, 11.0);
@@ -77,7 +79,7 @@ System channel(std::uint64_t seed) {
     sys.species.add({"wall", true});
     sys.pairs = PairTable(2);
     sys.pairs.set(0, 0, {25.0, 4.5, 0.0, true});
-    sys.pairs.set(0, 1, {25.0, 4.5, 0.0, true});
+    sys.pairs.set(0, 1, {fluidWallA, 4.5, 0.0, true});
     sys.pairs.set(1, 1, {25.0, 4.5, 0.0, true});
     sys.forceParameters = {1.0, 2.0, 1.0, 0.04};
     sys.seed = seed;
@@ -166,6 +168,16 @@ TEST(Determinism, OneAndTwoThreadsGiveIdenticalTrajectoriesInAChannel) {
         const Particles two = run(make, scheme, 2, 50);
         expectIdentical(one, two);
     }
+}
+
+TEST(Determinism, OneAndTwoThreadsGiveIdenticalTrajectoriesInAChannelWithOwnWallCoefficients) {
+    ThreadCount restore;
+    const auto make = [] { return channel(5, 35.0); };
+    const Particles one = run(make, "GrootWarren", 1, 50);
+    const Particles two = run(make, "GrootWarren", 2, 50);
+    expectIdentical(one, two);
+    // The wall coefficients matter: the trajectory differs from the common-coefficient channel's.
+    EXPECT_FALSE(sameBits(one.vx, run([] { return channel(5); }, "GrootWarren", 2, 50).vx));
 }
 
 TEST(Determinism, SameSeedSameTrajectoryDifferentSeedDifferent) {

@@ -1,53 +1,115 @@
-// dpdBenchmark: particle-steps per second of the standard DPD fluid (rho 3, a 25, gamma 4.5, kT 1,
-// dt 0.04, Groot-Warren lambda 0.65) at a chosen particle count and thread count.
-#include "integrators/Integrator.hpp"
-#include "run/Monitors.hpp"
-#include "run/StandardFluid.hpp"
+// dpdBenchmark: how fast. Particle-steps per second of the standard DPD fluid (rho 3, a 25, gamma 4.5,
+// kT 1, dt 0.04, Groot-Warren lambda 0.65) and of a channel between frozen walls, at chosen particle
+// counts and thread counts, with the time per step split by phase and the memory per particle. Prints
+// a table and, with -output, writes it to a file (whole or not at all). in.dpd.lammps beside this file
+// runs the same fluid in LAMMPS; README.md says how to compare.
+#include "BenchmarkTiming.hpp"
+
+#include "app/ToolCommandLine.hpp"
+#include "io/AtomicFile.hpp"
 
 #include <boost/program_options.hpp>
-#include <omp.h>
 
-#include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace po = boost::program_options;
 
-int main(int argc, char** argv) {
-    po::options_description opts("dpdBenchmark: throughput of the standard DPD fluid\nOptions");
-    dpd::StandardFluidSettings fluid;
-    int steps = 200, warmup = 20, threads = 0, dimension = 3;
-    double a = fluid.a;
-    opts.add_options()("help,h", "print this help")
-        ("particles,n", po::value<std::size_t>(&fluid.particles)->default_value(32000), "number of particles")
-        ("steps", po::value<int>(&steps)->default_value(200), "timed steps")
-        ("warmup", po::value<int>(&warmup)->default_value(20), "untimed steps first")
-        ("threads", po::value<int>(&threads)->default_value(0), "OpenMP threads (0: OMP_NUM_THREADS or all cores)")
-        ("a", po::value<double>(&a)->default_value(25.0), "conservative amplitude (0 switches the term off)")
-        ("dimension", po::value<int>(&dimension)->default_value(3), "2 or 3");
-    po::variables_map vm;
-    try {
-        // OpenFOAM-style single-dash long options are accepted too.
-        po::store(po::command_line_parser(argc, argv).options(opts).style(po::command_line_style::default_style |
-                                                                          po::command_line_style::allow_long_disguise).run(), vm);
-        po::notify(vm);
-    } catch (const std::exception& e) {
-        std::cerr << "dpdBenchmark: " << e.what() << "\n" << opts;
-        return 1;
+namespace {
+
+template <class T>
+std::vector<T> parseList(const std::string& text, const std::string& option) {
+    std::vector<T> values;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        std::istringstream field(item);
+        double v = 0.0;
+        if (!(field >> v) || !(field >> std::ws).eof() || v <= 0.0)
+            throw std::invalid_argument("-" + option + ": '" + item + "' is not a positive number");
+        values.push_back(static_cast<T>(v));
     }
-    if (vm.count("help")) { std::cout << opts; return 0; }
-    if (threads > 0) omp_set_num_threads(threads);
-    fluid.a = a;
-    fluid.dimension = dimension;
-    dpd::System sys = dpd::makeStandardFluid(fluid);
-    auto integrator = dpd::makeIntegrator({"GrootWarren", 0.65});
-    for (int s = 0; s < warmup; ++s) integrator->step(sys);
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int s = 0; s < steps; ++s) integrator->step(sys);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double rate = static_cast<double>(sys.particles.size()) * steps / seconds;
-    const dpd::MonitorReport r = dpd::monitor(sys, -1);
-    std::printf("particles %zu  threads %d  steps %d  seconds %.3f  particle-steps/s %.4g  kT %.4f\n",
-                sys.particles.size(), omp_get_max_threads(), steps, seconds, rate, r.kT);
-    return 0;
+    if (values.empty()) throw std::invalid_argument("-" + option + " needs at least one value");
+    return values;
+}
+
+std::vector<std::string> parseScenes(const std::string& text) {
+    std::vector<std::string> scenes;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ','))
+        if (item == "fluid" || item == "channel") scenes.push_back(item);
+        else throw std::invalid_argument("-scenes: unknown scene '" + item + "' (expected fluid or channel)");
+    return scenes;
+}
+
+std::string tableHeader() {
+    return "# dpdBenchmark: particle-steps/s (best of the timed segments), fractions of the step by phase, bytes\n"
+           "# per particle. rate: wall clock; cpuRate: per CPU second x threads; spread: worst/best segment - 1.\n"
+           "# scene    particles threads  rate       cpuRate    spread  ms/step   pairs neighb walls  integ  sampl  bytes/p  kT\n";
+}
+
+std::string tableRow(const dpd::BenchmarkResult& r) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "%-9s %9zu %7d  %9.3e  %9.3e  %6.3f  %8.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %7.1f  %.3f\n",
+                  r.scene.c_str(), r.particles, r.threads, r.rate, r.cpuRate, r.spread, r.msPerStep, r.pairs,
+                  r.neighbours, r.walls, r.integration, r.sampling, r.bytesPerParticle, r.kT);
+    return line;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return dpd::runTool("dpdBenchmark", [&] {
+        po::options_description opts("dpdBenchmark: throughput of the standard DPD fluid and of a walled channel\nOptions");
+        std::string particles, threads, scenes, output;
+        dpd::BenchmarkSettings settings;
+        double a = 25.0;
+        int dimension = 3;
+        opts.add_options()("help,h", "print this help")
+            ("particles,n", po::value<std::string>(&particles)->default_value("32000,256000"),
+             "particle counts, comma-separated (e.g. 32000,256000,1000000)")
+            ("threads", po::value<std::string>(&threads)->default_value("1,2"), "OpenMP thread counts, comma-separated")
+            ("scenes", po::value<std::string>(&scenes)->default_value("fluid,channel"), "fluid and/or channel")
+            ("steps", po::value<int>(&settings.steps)->default_value(100), "steps per timed segment")
+            ("segments", po::value<int>(&settings.segments)->default_value(3), "timed segments (the best counts)")
+            ("warmup", po::value<int>(&settings.warmup)->default_value(10), "untimed steps first")
+            ("a", po::value<double>(&a)->default_value(25.0), "fluid: conservative amplitude (0 switches the term off)")
+            ("dimension", po::value<int>(&dimension)->default_value(3), "fluid: 2 or 3")
+            ("output", po::value<std::string>(&output), "also write the table to this file");
+        po::variables_map vm;
+        try {
+            const int style = po::command_line_style::default_style | po::command_line_style::allow_long_disguise;
+            po::store(po::command_line_parser(argc, argv).options(opts).style(style).run(), vm);
+            po::notify(vm);
+        } catch (const po::error& e) {
+            throw std::invalid_argument(e.what());
+        }
+        if (vm.count("help")) { std::cout << opts; return; }
+        if (settings.steps < 1 || settings.segments < 1 || settings.warmup < 0)
+            throw std::invalid_argument("-steps and -segments must be at least 1, -warmup at least 0");
+        if (dimension != 2 && dimension != 3) throw std::invalid_argument("-dimension must be 2 or 3");
+        const auto counts = parseList<std::size_t>(particles, "particles");
+        const auto threadCounts = parseList<int>(threads, "threads");
+        const auto sceneNames = parseScenes(scenes);
+
+        std::string table = tableHeader();
+        std::cout << table << std::flush;
+        for (const std::string& name : sceneNames)
+            for (std::size_t n : counts) {
+                const dpd::BenchmarkScene scene =
+                    name == "fluid" ? dpd::makeFluidScene(n, a, dimension) : dpd::makeChannelScene(n);
+                for (int t : threadCounts) {
+                    const std::string row = tableRow(dpd::timeScene(scene, t, settings));
+                    std::cout << row << std::flush;
+                    table += row;
+                }
+            }
+        if (!output.empty()) dpd::writeTextFileAtomically(output, table, true);
+    });
 }

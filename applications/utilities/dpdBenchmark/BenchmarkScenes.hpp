@@ -1,0 +1,28 @@
+#pragma once
+// The scenes dpdBenchmark times: the standard DPD fluid in a periodic box, and a channel between
+// frozen fcc walls with bounce-back (the set-up of tutorials/channel/poiseuille, scaled to the
+// particle count), sampled every step by a binned profile as a run would be.
+#include "run/System.hpp"
+#include "sampling/FunctionObjects.hpp"
+
+#include <string>
+
+namespace dpd {
+
+struct BenchmarkScene {
+    std::string name;
+    System system;               // initialised, sorted, forces computed
+    FunctionObjects sampling;    // empty for the bare fluid
+    int flowAxis = -1;           // for the temperature about the local flow (monitor)
+};
+
+// The standard fluid: rho 3, a (25 by default; 0 drops the conservative term), gamma 4.5, kT 1,
+// dt 0.04, about `particles` particles.
+BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension);
+
+// The channel: walls at z = -10 and 10 with one cutoff of frozen fcc lattice behind each, rho 4,
+// a 18.75, gamma 4.5, body force 0.02 along x, bounce-back, dt 0.04, a square cross-section sized
+// for about `particles` particles (walls included), a 44-bin profile across z sampled every step.
+BenchmarkScene makeChannelScene(std::size_t particles);
+
+}  // namespace dpd

@@ -1,0 +1,97 @@
+#include "BenchmarkTiming.hpp"
+
+#include "forces/PairForceLoop.hpp"
+#include "integrators/GrootWarrenIntegrator.hpp"
+#include "run/Monitors.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+
+namespace dpd {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); }
+
+double processCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+template <class T>
+std::size_t capacityBytes(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+
+std::size_t particleBytes(const Particles& p) {
+    std::size_t bytes = capacityBytes(p.id) + capacityBytes(p.species);
+    for (const auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) bytes += capacityBytes(*a);
+    return bytes;
+}
+
+struct Segment {
+    double wall = 0.0, cpu = 0.0, sampling = 0.0;
+    StepTimes parts;
+};
+
+Segment runSegment(System& sys, GrootWarrenIntegrator& integrator, FunctionObjects& sampling, int steps) {
+    Segment s;
+    sys.stepTimes = &s.parts;
+    const double cpu0 = processCpuSeconds();
+    const auto t0 = Clock::now();
+    for (int k = 0; k < steps; ++k) {
+        integrator.step(sys);
+        const auto ts = Clock::now();
+        sampling.execute(sys);
+        s.sampling += seconds(ts);
+    }
+    s.wall = seconds(t0);
+    s.cpu = processCpuSeconds() - cpu0;
+    sys.stepTimes = nullptr;
+    return s;
+}
+
+}  // namespace
+
+BenchmarkResult timeScene(const BenchmarkScene& scene, int threads, const BenchmarkSettings& settings) {
+    omp_set_num_threads(threads);
+    System sys = scene.system;
+    FunctionObjects sampling = scene.sampling;
+    GrootWarrenIntegrator integrator(0.65);
+    for (int k = 0; k < settings.warmup; ++k) integrator.step(sys);
+
+    Segment best, worst;
+    for (int k = 0; k < settings.segments; ++k) {
+        const Segment s = runSegment(sys, integrator, sampling, settings.steps);
+        if (k == 0 || s.wall < best.wall) best = s;
+        if (k == 0 || s.wall > worst.wall) worst = s;
+    }
+
+    BenchmarkResult r;
+    r.scene = scene.name;
+    r.particles = sys.particles.size();
+    r.threads = threads;
+    const double particleSteps = static_cast<double>(r.particles) * settings.steps;
+    r.rate = particleSteps / best.wall;
+    r.cpuRate = particleSteps * threads / best.cpu;
+    r.spread = worst.wall / best.wall - 1.0;
+    r.msPerStep = 1e3 * best.wall / settings.steps;
+    r.pairs = best.parts.forces / best.wall;
+    r.neighbours = (best.parts.wrap + best.parts.sort) / best.wall;
+    r.walls = best.parts.walls / best.wall;
+    r.sampling = best.sampling / best.wall;
+    r.integration = std::max(0.0, 1.0 - r.pairs - r.neighbours - r.walls - r.sampling);
+    const std::size_t bytes = particleBytes(sys.particles) + sys.cells().memoryBytes() + integrator.memoryBytes() +
+                              pairLoopScratchBytes();
+    r.bytesPerParticle = static_cast<double>(bytes) / static_cast<double>(r.particles);
+    r.kT = monitor(sys, scene.flowAxis).kT;
+    return r;
+}
+
+}  // namespace dpd

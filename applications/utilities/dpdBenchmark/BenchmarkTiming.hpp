@@ -1,0 +1,37 @@
+#pragma once
+// Timing one scene on one thread count: warm-up steps, then several timed segments of steps, of which
+// the best counts (the machine may be shared: the best segment is the one least disturbed, and the
+// spread between best and worst says how noisy the measurement was). The time per step is split by
+// phase with System's step timer and the sampling call; memory is counted from the capacities of the
+// arrays the run holds.
+#include "BenchmarkScenes.hpp"
+
+#include <cstddef>
+#include <string>
+
+namespace dpd {
+
+struct BenchmarkSettings {
+    int warmup = 10;
+    int steps = 100;    // per segment
+    int segments = 3;   // timed segments; the best counts
+};
+
+struct BenchmarkResult {
+    std::string scene;
+    std::size_t particles = 0;
+    int threads = 1;
+    double rate = 0.0;        // particle-steps per second, best segment, wall clock
+    double cpuRate = 0.0;     // particle-steps per second of CPU time x threads (descheduled time left out)
+    double spread = 0.0;      // worst segment time / best segment time - 1
+    double msPerStep = 0.0;   // best segment
+    // Fractions of the best segment's time.
+    double pairs = 0.0, neighbours = 0.0, walls = 0.0, integration = 0.0, sampling = 0.0;
+    double bytesPerParticle = 0.0;
+    double kT = 0.0;          // at the end, as a check that the run stayed sane
+};
+
+// Runs a copy of the scene's system on `threads` OpenMP threads.
+BenchmarkResult timeScene(const BenchmarkScene& scene, int threads, const BenchmarkSettings& settings);
+
+}  // namespace dpd
