@@ -250,7 +250,7 @@ FoamCaseSpec makeFoamCaseSpec(const Dictionary& dict, const Dictionary& dpdPrope
     readMesh(dict, s.dpdBox, model.cutoff, hasGeometry, s);
     readViscosityAndSlip(dict, in, s);
     readLines(dict, s);
-    s.maxIterations = dict.getOrDefault<int>("maxIterations", 2000);
+    s.maxIterations = dict.getOrDefault<int>("maxIterations", 20000);
     if (s.maxIterations < 1) dict.fail("maxIterations", "must be positive");
     s.residual = dict.found("residual") ? dict.getPositive<double>("residual") : 1e-12;
     if (hasGeometry) markSolidCells(dpdProperties, in.caseDir, s.dpdBox, model.cutoff, s);

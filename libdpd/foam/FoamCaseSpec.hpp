@@ -16,7 +16,7 @@
 //   box { min (..); max (..); } // default: the box of the latest time's (or 0/) particle snapshot
 //   lines { centre { start (0 0 -5); end (0 0 5); nPoints 161; } }   // sampling lines; default one
 //                               //   line across a planar channel, through the middle of the box
-//   maxIterations 2000;         // SIMPLE iterations at most (endTime); default 2000
+//   maxIterations 20000;        // SIMPLE iterations at most (endTime); default 20000
 //   residual    1e-12;          // residualControl for p and U; default 1e-12
 //
 // Mesh: one block over the box; between two facing planar walls along an axis it spans only the fluid
@@ -65,7 +65,7 @@ struct FoamCaseSpec {
     std::vector<FoamLine> lines;
     std::vector<std::size_t> solidCells;    // blockMesh cell labels (i + nx (j + ny k)) to remove
     std::string geometrySource;             // the mask or gmsh file, when there is one
-    int maxIterations = 2000;
+    int maxIterations = 20000;
     double residual = 1e-12;
     std::string foamCase = "simpleFoam";    // relative to the DPD case
 
