@@ -1,0 +1,171 @@
+#!/bin/bash
+# makeFoamCase, OpenFOAM (blockMesh, topoSet, subsetMesh, simpleFoam, postProcess) and compareFVM end to
+# end on small generated cases: the channel's simpleFoam solution against the analytic parabola (no slip
+# and Navier slip) to solver precision, compareFVM's L2 on a DPD profile with a known error, a solid cut
+# from an image mask, and the errors for bad input.
+#   $1: the directory of the executables, $2: the source directory
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+py=/usr/bin/python3
+
+. "$src/etc/RunFunctions" || exit 1
+sourceOpenFOAM || exit 1
+export PATH="$bin:$PATH"
+
+expectError() {
+    local status=$1 log=$2
+    shift 2
+    if [ "$status" -eq 0 ]; then fail "expected a non-zero exit status ($(head -c 300 "$log"))"; return; fi
+    for pattern in "$@"; do
+        grep -q -- "$pattern" "$log" || fail "message lacks '$pattern': $(cat "$log")"
+    done
+}
+
+header='FoamFile { version 2.0; format ascii; class dictionary; }'
+
+# A DPD channel: walls at z = -5 and 5, g = 0.02 along x; no particles needed (the box is given).
+makeDpdCase() {
+    local c=$1 extra=${2:-}
+    mkdir -p "$c/system" "$c/constant"
+    cat > "$c/constant/dpdProperties" <<EOD
+$header
+dimension 3; kT 1; seed 3;
+species { fluid { frozen no; } wall { frozen yes; } }
+pairCoeffs { fluid-fluid { a 18.75; gamma 4.5; } fluid-wall { a 18.75; gamma 4.5; } }
+integrator { type GrootWarren; lambda 0.65; }
+bodyForce { type uniform; value (0.02 0 0); }
+walls
+{
+    lower { type plane; point (0 0 -5); normal (0 0 1); reflection bounceBack; }
+    upper { type plane; point (0 0 5); normal (0 0 -1); reflection bounceBack; }
+}
+EOD
+    cat > "$c/system/makeFoamCaseDict" <<EOD
+$header
+box { min (-5 -1.5 -6); max (5 1.5 6); }
+nu 0.5;
+cellSize 0.25;
+$extra
+EOD
+}
+
+# checkParabola CASE BETA: the cell values equal the Navier-slip parabola
+# g/(2 nu) [(z - a)(b - z) + beta d] shifted by g h^2 / (8 nu) (the half-cell wall gradient: see
+# tutorials/channel/poiseuilleFVM/plotCompareFVM.py), to 1e-8 of the centre velocity.
+checkParabola() {
+    "$py" - "$1" "$2" <<'EOD'
+import os, re, sys
+import numpy as np
+case, beta = sys.argv[1], float(sys.argv[2])
+t = max((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and float(d) > 0), key=float)
+def field(name):
+    body = open(f"{case}/{t}/{name}").read().split("internalField")[1]
+    n = int(re.search(r"List<vector>\s*(\d+)", body).group(1))
+    nums = re.findall(r"[-+0-9.eE]+", body[body.index("(", body.index("List<vector>")) + 1:].replace("(", " ").replace(")", " "))
+    return np.array(nums[: 3 * n], float).reshape(n, 3)
+z, u = field("C")[:, 2], field("U")[:, 0]
+g, nu, a, b, h = 0.02, 0.5, -5.0, 5.0, 0.25
+exact = g / (2 * nu) * ((z - a) * (b - z) + beta * (b - a)) + g * h * h / (8 * nu)
+err = np.max(np.abs(u - exact)) / np.max(exact)
+print(f"{case}: max |U - parabola - g h^2/8nu| / u_max = {err:.2e}")
+sys.exit(0 if err < 1e-8 and len(z) == 40 else 1)
+EOD
+}
+
+# 1. No-slip channel through simpleFoam.
+c=$work/channel
+makeDpdCase "$c"
+"$bin/makeFoamCase" -case "$c" > "$work/log.make" 2>&1 || fail "makeFoamCase: $(cat "$work/log.make")"
+"$c/simpleFoam/Allrun" > "$work/log.allrun" 2>&1 || fail "Allrun: $(cat "$work/log.allrun")"
+grep -q "SIMPLE solution converged" "$c/simpleFoam/log.simpleFoam" || fail "simpleFoam did not reach residualControl"
+checkParabola "$c/simpleFoam" 0 || fail "no-slip channel differs from the analytic parabola"
+
+# 2. compareFVM on a DPD profile 2 % above the parabola (and bins inside the walls, left out):
+#    L2 = meanVelocityRatio - 1 = 0.02 up to the continuum's discretisation (h/d)^2 = 6e-4.
+mkdir -p "$c/300" "$c/postProcessing/profileBins/300"
+"$py" - > "$c/postProcessing/profileBins/300/channelProfile.dat" <<'EOD'
+import numpy as np
+z = np.linspace(-5.875, 5.875, 48)
+u = np.where(abs(z) < 5, 1.02 * 0.02 / (2 * 0.5) * (z + 5) * (5 - z), 0.0)
+print("# z density densityErr ux uxErr uy uyErr uz uzErr kT kTErr count")
+for a, b in zip(z, u):
+    print(a, 4, 0.01, b, 0.001, 0, 0.001, 0, 0.001, 1, 0.01, 1000)
+EOD
+"$bin/compareFVM" -case "$c" -latestTime > "$work/log.compare" 2>&1 || fail "compareFVM: $(cat "$work/log.compare")"
+"$py" - "$c/postProcessing/compareFVM/300/compare.dat" <<'EOD' || fail "compareFVM's metrics are off: $(cat "$c/postProcessing/compareFVM/300/compare.dat")"
+import re, sys
+text = open(sys.argv[1]).read()
+get = lambda k: float(re.search(rf"^{k}\s+([-+0-9.eE]+);", text, re.M).group(1))
+ok = abs(get("L2") - 0.02) < 1.5e-3 and abs(get("meanVelocityRatio") - 1.02) < 1.5e-3 and get("points") == 40
+ok = ok and "channel" in text
+sys.exit(0 if ok else 1)
+EOD
+
+# 3. Navier slip 0.5 at both walls (partialSlip).
+s=$work/slip
+makeDpdCase "$s" "slipLength 0.5;"
+"$bin/makeFoamCase" -case "$s" > "$work/log.make" 2>&1 || fail "makeFoamCase (slip): $(cat "$work/log.make")"
+"$s/simpleFoam/Allrun" > "$work/log.allrun" 2>&1 || fail "Allrun (slip): $(cat "$work/log.allrun")"
+checkParabola "$s/simpleFoam" 0.5 || fail "slip channel differs from the Navier-slip parabola"
+
+# 4. A solid square cut from an image mask (topoSet + subsetMesh): 64 cells less 16, none inside it.
+m=$work/mask
+mkdir -p "$m/system" "$m/constant/geometry"
+printf 'P2\n4 4\n255\n255 255 255 255\n255 0 0 255\n255 0 0 255\n255 255 255 255\n' > "$m/constant/geometry/mask.pgm"
+sed -e '/^walls/,$d' "$c/constant/dpdProperties" > "$m/constant/dpdProperties"
+echo 'geometry { type imageMask; file "constant/geometry/mask.pgm"; solidValues (0); pixelSize 1; smooth no; extrudeAxis y; }' \
+    >> "$m/constant/dpdProperties"
+printf '%s\nbox { min (0 0 0); max (4 1 4); }\nnu 0.5;\ncellSize 0.5;\nmaxIterations 50;\n' "$header" > "$m/system/makeFoamCaseDict"
+"$bin/makeFoamCase" -case "$m" > "$work/log.make" 2>&1 || fail "makeFoamCase (mask): $(cat "$work/log.make")"
+"$m/simpleFoam/Allrun" > "$work/log.allrun" 2>&1 || fail "Allrun (mask): $(cat "$work/log.allrun")"
+"$py" - "$m/simpleFoam" <<'EOD' || fail "the solid cut is wrong"
+import os, re, sys
+import numpy as np
+case = sys.argv[1]
+t = max((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and float(d) > 0), key=float)
+body = open(f"{case}/{t}/C").read().split("internalField")[1]
+n = int(re.search(r"List<vector>\s*(\d+)", body).group(1))
+nums = re.findall(r"[-+0-9.eE]+", body[body.index("(", body.index("List<vector>")) + 1:].replace("(", " ").replace(")", " "))
+c = np.array(nums[: 3 * n], float).reshape(n, 3)
+inside = (c[:, 0] > 1) & (c[:, 0] < 3) & (c[:, 2] > 1) & (c[:, 2] < 3)
+print(f"{n} fluid cells, {inside.sum()} inside the solid")
+sys.exit(0 if n == 48 and not inside.any() else 1)
+EOD
+grep -q "solidWalls" "$m/simpleFoam/constant/polyMesh/boundary" || fail "no solidWalls patch after subsetMesh"
+
+# 5. Bad input: clear messages naming the file, non-zero status, nothing written.
+b=$work/bad
+makeDpdCase "$b"
+sed -i 's/^nu 0.5;//' "$b/system/makeFoamCaseDict"
+"$bin/makeFoamCase" -case "$b" > "$work/log" 2>&1
+expectError $? "$work/log" "makeFoamCaseDict" "nu" "fitSlipLength"
+[ -e "$b/simpleFoam" ] && fail "makeFoamCase wrote a case from bad input"
+
+"$bin/compareFVM" -case "$b" -latestTime > "$work/log" 2>&1
+expectError $? "$work/log" "no OpenFOAM case" "$b/simpleFoam"
+
+mv "$c/simpleFoam/$(ls "$c/simpleFoam" | grep -E '^[0-9]+$' | sort -n | tail -1)/U" "$work/U.keep"
+"$bin/compareFVM" -case "$c" -latestTime > "$work/log" 2>&1
+expectError $? "$work/log" "/U" "did simpleFoam run"
+mv "$work/U.keep" "$c/simpleFoam/$(ls "$c/simpleFoam" | grep -E '^[0-9]+$' | sort -n | tail -1)/U"
+
+sed -i 's/point (0 0 5)/point (0 0 4)/' "$c/constant/dpdProperties"
+"$bin/compareFVM" -case "$c" -latestTime > "$work/log" 2>&1
+expectError $? "$work/log" "constant/dpdCase" "wallAxis" "rerun makeFoamCase"
+
+rm -rf "$c/postProcessing/compareFVM"
+sed -i 's/point (0 0 4)/point (0 0 5)/' "$c/constant/dpdProperties"
+"$bin/compareFVM" -case "$c" -time 77 > "$work/log" 2>&1
+expectError $? "$work/log" "no time directory 77"
+[ -e "$c/postProcessing/compareFVM" ] && fail "compareFVM wrote results from bad input"
+
+if [ $failures -gt 0 ]; then
+    echo "$failures failure(s)"
+    exit 1
+fi
+echo "foamTwin: all checks passed"
