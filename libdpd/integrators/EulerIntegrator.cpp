@@ -26,6 +26,7 @@ WallCounters EulerIntegrator::step(System& sys) {
     sys.wrapPositions();
     sys.sortByCell();
     sys.computeForces();
+    sys.completeWalls();
     return walls;
 }
 
