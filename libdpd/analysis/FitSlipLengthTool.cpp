@@ -329,6 +329,20 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     return r;
 }
 
+namespace {
+
+// The per-wall entries fit.dat has in both channel modes: (lower upper) lists.
+void setWallFits(Dictionary& d, const WallFitResult& lower, const WallFitResult& upper) {
+    d.setValue("wallPosition", std::vector<double>{lower.position, upper.position});
+    d.setValue("wallVelocity", std::vector<double>{lower.wallVelocity, upper.wallVelocity});
+    d.setValue("slipLength", std::vector<double>{lower.slipLength, upper.slipLength});
+    d.setValue("slipLengthError", std::vector<double>{lower.slipLengthErr, upper.slipLengthErr});
+    d.setValue("slipVelocity", std::vector<double>{lower.slipVelocity, upper.slipVelocity});
+    d.setValue("slipVelocityError", std::vector<double>{lower.slipVelocityErr, upper.slipVelocityErr});
+}
+
+}  // namespace
+
 Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
     Dictionary d;
     d.setValue("mode", std::string(modeName(r.mode)));
@@ -343,12 +357,7 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
         const PoiseuilleFitResult& p = r.poiseuille;
         d.setValue("nu", p.nu);
         d.setValue("nuError", p.nuErr);
-        d.setValue("wallPosition", std::vector<double>{p.lower.position, p.upper.position});
-        d.setValue("wallVelocity", std::vector<double>{p.lower.wallVelocity, p.upper.wallVelocity});
-        d.setValue("slipLength", std::vector<double>{p.lower.slipLength, p.upper.slipLength});
-        d.setValue("slipLengthError", std::vector<double>{p.lower.slipLengthErr, p.upper.slipLengthErr});
-        d.setValue("slipVelocity", std::vector<double>{p.lower.slipVelocity, p.upper.slipVelocity});
-        d.setValue("slipVelocityError", std::vector<double>{p.lower.slipVelocityErr, p.upper.slipVelocityErr});
+        setWallFits(d, p.lower, p.upper);
         d.setValue("shearRate", std::vector<double>{p.lower.shearRate, p.upper.shearRate});
         d.setValue("centre", p.centre);
         d.setValue("maxVelocity", p.maxVelocity);
@@ -368,12 +377,7 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
             d.setValue("nu", "none");  // no stress column in the profile table
         }
         d.setValue("fitRange", std::vector<double>{c.fitLow, c.fitHigh});
-        d.setValue("wallPosition", std::vector<double>{c.lower.position, c.upper.position});
-        d.setValue("wallVelocity", std::vector<double>{c.lower.wallVelocity, c.upper.wallVelocity});
-        d.setValue("slipLength", std::vector<double>{c.lower.slipLength, c.upper.slipLength});
-        d.setValue("slipLengthError", std::vector<double>{c.lower.slipLengthErr, c.upper.slipLengthErr});
-        d.setValue("slipVelocity", std::vector<double>{c.lower.slipVelocity, c.upper.slipVelocity});
-        d.setValue("slipVelocityError", std::vector<double>{c.lower.slipVelocityErr, c.upper.slipVelocityErr});
+        setWallFits(d, c.lower, c.upper);
         d.setValue("shearRate", c.shearRate);
         d.setValue("shearRateError", c.shearRateErr);
         d.setValue("coefficients", c.coefficients);
