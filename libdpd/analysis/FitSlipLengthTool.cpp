@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "io/TimeDirectories.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -22,7 +23,43 @@ const char* axisName(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 int axisFromName(const std::string& s) { return s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1; }
 
 const char* modeName(FitSlipLengthMode m) {
-    return m == FitSlipLengthMode::poiseuille ? "poiseuille" : "reversePoiseuille";
+    switch (m) {
+        case FitSlipLengthMode::poiseuille: return "poiseuille";
+        case FitSlipLengthMode::reversePoiseuille: return "reversePoiseuille";
+        case FitSlipLengthMode::couette: return "couette";
+    }
+    return "unknown";
+}
+
+// The component along which the walls slide (couette default): the one axis with a nonzero wall
+// velocity component, -1 when there is not exactly one.
+int wallSlidingAxis(const DpdModel& m) {
+    int axis = -1, count = 0;
+    for (int a = 0; a < 3; ++a) {
+        bool moving = false;
+        for (const PlanarWall& w : m.walls.walls()) moving = moving || w.velocity[a] != 0.0;
+        if (moving) { axis = a; ++count; }
+    }
+    return count == 1 ? axis : -1;
+}
+
+// The two planar walls facing each other across the profile's axis, lower first.
+std::pair<const PlanarWall*, const PlanarWall*> channelWalls(const FitSlipLengthSetup& s, const ProfileTableData& t,
+                                                              int axis) {
+    std::vector<const PlanarWall*> walls;
+    for (const PlanarWall& w : s.model.walls.walls())
+        if (w.normalAxis() == axis) walls.push_back(&w);
+    if (walls.size() != 2)
+        s.dpdProperties.fail("walls", std::string("mode ") + modeName(s.mode) +
+                                          " needs exactly two planar walls with normals along " + t.axisName() +
+                                          " (the axis of " + t.file + "), found " + std::to_string(walls.size()));
+    if (walls[0]->point[axis] > walls[1]->point[axis]) std::swap(walls[0], walls[1]);
+    const PlanarWall& lower = *walls[0];
+    const PlanarWall& upper = *walls[1];
+    if (!(lower.normal[axis] > 0.0 && upper.normal[axis] < 0.0 && upper.point[axis] > lower.point[axis]))
+        s.dpdProperties.fail("walls", "walls '" + lower.name + "' and '" + upper.name +
+                                          "' do not face each other across a channel along " + t.axisName());
+    return {walls[0], walls[1]};
 }
 
 std::string vectorText(const Eigen::Vector3d& v) {
@@ -77,6 +114,40 @@ void binRange(const ProfileTableData& t, double& lo, double& hi) {
     hi = c.back() + 0.5 * w;
 }
 
+double centralDensity(const ProfileTableData& t);
+
+[[noreturn]] void fitFailed(const FitSlipLengthSetup& s, const ProfileTableData& t, const std::invalid_argument& e) {
+    const Dictionary& d = s.dict;
+    const std::string key = d.found("fitRange") ? "fitRange" : d.found("exclude") ? "exclude" : "";
+    throw InputError(d.fileName(), key.empty() ? 0 : d.lineOf(key), key,
+                     "cannot fit the profile " + t.file + ": " + e.what());
+}
+
+// The stress column of the shear component (flow component, profile axis), e.g. sigmaxz.
+std::string shearStressColumn(int component, int axis) {
+    const int a = std::min(component, axis), b = std::max(component, axis);
+    return std::string("sigma") + axisName(a) + axisName(b);
+}
+
+void fitCouetteMode(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& profile,
+                    FitSlipLengthResult& r) {
+    const auto [lower, upper] = channelWalls(s, t, r.axis);
+    const double yLow = lower->point[r.axis], yHigh = upper->point[r.axis];
+    const double fitLow = s.hasFitRange ? s.fitLow : yLow + s.exclude;
+    const double fitHigh = s.hasFitRange ? s.fitHigh : yHigh - s.exclude;
+    try {
+        r.couette = fitCouette(profile, yLow, yHigh, fitLow, fitHigh, lower->velocity[s.component],
+                               upper->velocity[s.component]);
+        r.stressColumn = shearStressColumn(s.component, r.axis);
+        r.hasStress = t.has(r.stressColumn) && t.has(r.stressColumn + "Err");
+        if (r.hasStress)
+            r.stress = viscosityFromStress(t.column(t.axisName()), t.column(r.stressColumn), t.column(r.stressColumn + "Err"),
+                                           r.couette, centralDensity(t));
+    } catch (const std::invalid_argument& e) {
+        fitFailed(s, t, e);
+    }
+}
+
 // Count-weighted mean density of the bins in the central half of the bin range.
 double centralDensity(const ProfileTableData& t) {
     double lo, hi;
@@ -105,11 +176,38 @@ double firstMobileGamma(const DpdModel& m) {
     return std::numeric_limits<double>::quiet_NaN();
 }
 
-[[noreturn]] void fitFailed(const FitSlipLengthSetup& s, const ProfileTableData& t, const std::invalid_argument& e) {
+
+// The component fitted: as given, or the one axis the walls slide along.
+int couetteComponent(const FitSlipLengthSetup& s) {
     const Dictionary& d = s.dict;
-    const std::string key = d.found("exclude") ? "exclude" : "";
-    throw InputError(d.fileName(), key.empty() ? 0 : d.lineOf(key), key,
-                     "cannot fit the profile " + t.file + ": " + e.what());
+    if (d.found("component")) {
+        const std::string c = d.get<std::string>("component");
+        const int a = axisFromName(c);
+        if (a < 0) d.fail("component", "expected x, y or z, not '" + c + "'");
+        return a;
+    }
+    const int a = wallSlidingAxis(s.model);
+    if (a < 0)
+        d.fail("component", "not given, and the walls of " + s.dpdProperties.fileName() +
+                                " do not slide along exactly one axis: say which velocity component to fit");
+    return a;
+}
+
+void readCouetteSetup(FitSlipLengthSetup& s) {
+    const Dictionary& d = s.dict;
+    if (s.model.bodyForce.active())
+        s.dpdProperties.fail("bodyForce", "mode couette (" + d.fileName() + ") fits a line: it needs no body force");
+    s.component = couetteComponent(s);
+    if (d.found("fitRange")) {
+        if (d.found("exclude")) d.fail("fitRange", "give either fitRange or exclude, not both");
+        const std::vector<double> range = d.get<std::vector<double>>("fitRange");
+        if (range.size() != 2 || !(range[1] > range[0]))
+            d.fail("fitRange", "expected (low high) with high > low");
+        s.hasFitRange = true;
+        s.fitLow = range[0];
+        s.fitHigh = range[1];
+    }
+    s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : s.model.cutoff;
 }
 
 }  // namespace
@@ -120,12 +218,13 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     s.dpdProperties = dpdProperties;
     s.model = readDpdModel(dpdProperties);
     const Dictionary& d = s.dict;
-    d.checkKeys({"mode", "profile", "component", "exclude"});
+    d.checkKeys({"mode", "profile", "component", "exclude", "fitRange"});
 
     const std::string mode = d.get<std::string>("mode");
     if (mode == "poiseuille") s.mode = FitSlipLengthMode::poiseuille;
     else if (mode == "reversePoiseuille") s.mode = FitSlipLengthMode::reversePoiseuille;
-    else d.fail("mode", "unknown mode '" + mode + "' (expected poiseuille or reversePoiseuille)");
+    else if (mode == "couette") s.mode = FitSlipLengthMode::couette;
+    else d.fail("mode", "unknown mode '" + mode + "' (expected poiseuille, reversePoiseuille or couette)");
 
     s.profile = d.get<std::string>("profile");
     if (s.profile.empty() || s.profile.find('/') != std::string::npos)
@@ -133,13 +232,19 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
 
     const BodyForce& f = s.model.bodyForce;
     const std::string dpdFile = dpdProperties.fileName();
+    if (s.mode != FitSlipLengthMode::couette && d.found("fitRange"))
+        d.fail("fitRange", "only mode couette takes a fitRange (use exclude)");
     if (s.mode == FitSlipLengthMode::poiseuille) {
         if (f.type == BodyForce::Type::reversePoiseuille)
             d.fail("mode", dpdFile + " has a reversePoiseuille body force: use mode reversePoiseuille");
         if (f.type != BodyForce::Type::uniform || !f.active())
             dpdProperties.fail("bodyForce", "mode poiseuille (" + d.fileName() + ") needs a uniform nonzero body force");
-    } else if (f.type != BodyForce::Type::reversePoiseuille || !f.active()) {
-        d.fail("mode", "mode reversePoiseuille needs a nonzero body force of type reversePoiseuille in " + dpdFile);
+    } else if (s.mode == FitSlipLengthMode::reversePoiseuille) {
+        if (f.type != BodyForce::Type::reversePoiseuille || !f.active())
+            d.fail("mode", "mode reversePoiseuille needs a nonzero body force of type reversePoiseuille in " + dpdFile);
+    } else {
+        readCouetteSetup(s);
+        return s;
     }
 
     if (d.found("component")) {
@@ -189,25 +294,17 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     r.binsWithoutError = pts.withoutError;
 
     if (s.mode == FitSlipLengthMode::poiseuille) {
-        std::vector<const PlanarWall*> walls;
-        for (const PlanarWall& w : s.model.walls.walls())
-            if (w.normalAxis() == r.axis) walls.push_back(&w);
-        if (walls.size() != 2)
-            s.dpdProperties.fail("walls", "mode poiseuille needs exactly two planar walls with normals along " +
-                                              t.axisName() + " (the axis of " + t.file + "), found " +
-                                              std::to_string(walls.size()));
-        if (walls[0]->point[r.axis] > walls[1]->point[r.axis]) std::swap(walls[0], walls[1]);
-        const PlanarWall& lower = *walls[0];
-        const PlanarWall& upper = *walls[1];
-        if (!(lower.normal[r.axis] > 0.0 && upper.normal[r.axis] < 0.0 && upper.point[r.axis] > lower.point[r.axis]))
-            s.dpdProperties.fail("walls", "walls '" + lower.name + "' and '" + upper.name +
-                                              "' do not face each other across a channel along " + t.axisName());
+        const auto [lowerWall, upperWall] = channelWalls(s, t, r.axis);
+        const PlanarWall& lower = *lowerWall;
+        const PlanarWall& upper = *upperWall;
         try {
             r.poiseuille = fitPoiseuille(pts.profile, r.g, lower.point[r.axis], upper.point[r.axis], s.exclude,
                                          lower.velocity[s.component], upper.velocity[s.component]);
         } catch (const std::invalid_argument& e) {
             fitFailed(s, t, e);
         }
+    } else if (s.mode == FitSlipLengthMode::couette) {
+        fitCouetteMode(s, t, pts.profile, r);
     } else {
         if (r.axis != s.model.bodyForce.gradientAxis)
             s.dpdProperties.fail("bodyForce", "the reversePoiseuille gradientAxis is " +
@@ -232,6 +329,20 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     return r;
 }
 
+namespace {
+
+// The per-wall entries fit.dat has in both channel modes: (lower upper) lists.
+void setWallFits(Dictionary& d, const WallFitResult& lower, const WallFitResult& upper) {
+    d.setValue("wallPosition", std::vector<double>{lower.position, upper.position});
+    d.setValue("wallVelocity", std::vector<double>{lower.wallVelocity, upper.wallVelocity});
+    d.setValue("slipLength", std::vector<double>{lower.slipLength, upper.slipLength});
+    d.setValue("slipLengthError", std::vector<double>{lower.slipLengthErr, upper.slipLengthErr});
+    d.setValue("slipVelocity", std::vector<double>{lower.slipVelocity, upper.slipVelocity});
+    d.setValue("slipVelocityError", std::vector<double>{lower.slipVelocityErr, upper.slipVelocityErr});
+}
+
+}  // namespace
+
 Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
     Dictionary d;
     d.setValue("mode", std::string(modeName(r.mode)));
@@ -246,18 +357,32 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
         const PoiseuilleFitResult& p = r.poiseuille;
         d.setValue("nu", p.nu);
         d.setValue("nuError", p.nuErr);
-        d.setValue("wallPosition", std::vector<double>{p.lower.position, p.upper.position});
-        d.setValue("wallVelocity", std::vector<double>{p.lower.wallVelocity, p.upper.wallVelocity});
-        d.setValue("slipLength", std::vector<double>{p.lower.slipLength, p.upper.slipLength});
-        d.setValue("slipLengthError", std::vector<double>{p.lower.slipLengthErr, p.upper.slipLengthErr});
-        d.setValue("slipVelocity", std::vector<double>{p.lower.slipVelocity, p.upper.slipVelocity});
-        d.setValue("slipVelocityError", std::vector<double>{p.lower.slipVelocityErr, p.upper.slipVelocityErr});
+        setWallFits(d, p.lower, p.upper);
         d.setValue("shearRate", std::vector<double>{p.lower.shearRate, p.upper.shearRate});
         d.setValue("centre", p.centre);
         d.setValue("maxVelocity", p.maxVelocity);
         d.setValue("coefficients", p.coefficients);
         d.setValue("chi2PerDof", p.chi2PerDof);
         d.setValue("dof", p.dof);
+    } else if (r.mode == FitSlipLengthMode::couette) {
+        const CouetteFitResult& c = r.couette;
+        if (r.hasStress) {
+            d.setValue("nu", r.stress.nu);
+            d.setValue("nuError", r.stress.nuErr);
+            d.setValue("eta", r.stress.eta);
+            d.setValue("etaError", r.stress.etaErr);
+            d.setValue("shearStress", r.stress.stress);
+            d.setValue("shearStressError", r.stress.stressErr);
+        } else {
+            d.setValue("nu", "none");  // no stress column in the profile table
+        }
+        d.setValue("fitRange", std::vector<double>{c.fitLow, c.fitHigh});
+        setWallFits(d, c.lower, c.upper);
+        d.setValue("shearRate", c.shearRate);
+        d.setValue("shearRateError", c.shearRateErr);
+        d.setValue("coefficients", c.coefficients);
+        d.setValue("chi2PerDof", c.chi2PerDof);
+        d.setValue("dof", c.dof);
     } else {
         const ReversePoiseuilleResult& p = r.reverse;
         d.setValue("boxLow", r.boxLow);
@@ -313,6 +438,25 @@ void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
         row("slip velocity", withErr(p.lower.slipVelocity, p.lower.slipVelocityErr),
             withErr(p.upper.slipVelocity, p.upper.slipVelocityErr));
         row("shear rate", num(p.lower.shearRate), num(p.upper.shearRate));
+    } else if (r.mode == FitSlipLengthMode::couette) {
+        const CouetteFitResult& c = r.couette;
+        row("fit range", "[" + num(c.fitLow) + ", " + num(c.fitHigh) + "]");
+        row("shear rate", withErr(c.shearRate, c.shearRateErr));
+        if (r.hasStress) {
+            row("shear stress", withErr(r.stress.stress, r.stress.stressErr), "(" + r.stressColumn + ")");
+            row("eta", withErr(r.stress.eta, r.stress.etaErr));
+            row("nu", withErr(r.stress.nu, r.stress.nuErr));
+        } else {
+            row("nu", "none (no column " + r.stressColumn + " in the profile: sample with stress yes)");
+        }
+        row("chi2/dof", num(c.chi2PerDof) + " (dof " + std::to_string(c.dof) + ")");
+        row("", "lower wall (" + ax + " = " + num(c.lower.position) + ")",
+            "upper wall (" + ax + " = " + num(c.upper.position) + ")");
+        row("wall velocity", num(c.lower.wallVelocity), num(c.upper.wallVelocity));
+        row("slip length", withErr(c.lower.slipLength, c.lower.slipLengthErr),
+            withErr(c.upper.slipLength, c.upper.slipLengthErr));
+        row("slip velocity", withErr(c.lower.slipVelocity, c.lower.slipVelocityErr),
+            withErr(c.upper.slipVelocity, c.upper.slipVelocityErr));
     } else {
         const ReversePoiseuilleResult& p = r.reverse;
         row("box along " + ax, "[" + num(r.boxLow) + ", " + num(r.boxLow + r.boxLength) + ")");

@@ -2,13 +2,16 @@
 // fitSlipLength: viscosity and wall slip from a profile table written by profileBins, as set in
 // system/fitSlipLengthDict:
 //
-//   mode       poiseuille;      // poiseuille | reversePoiseuille
+//   mode       poiseuille;      // poiseuille | reversePoiseuille | couette
 //   profile    channelProfile;  // the table postProcessing/profileBins/<time>/<profile>.dat
 //   component  x;               // the velocity component along the flow; default: the direction of
 //                               // the body force (when it has exactly one nonzero component)
 //   exclude    0;               // poiseuille: distance from each wall left out of the fit (default 0);
 //                               // reversePoiseuille: half-width of the band left out around the
-//                               // planes where the force jumps (default 1)
+//                               // planes where the force jumps (default 1);
+//                               // couette: distance from each wall left out (default 1 cutoff)
+//   fitRange   (-10 10);        // couette only, instead of exclude: the range of the profile axis
+//                               // the line is fitted over
 //
 // poiseuille: the walls are the two planar walls of constant/dpdProperties whose normals lie along
 // the profile's axis; g is the uniform body force's component along `component`, and the walls'
@@ -17,12 +20,19 @@
 // taken from the profile's bins (first centre - half a bin to last centre + half a bin), so the bins
 // must cover the whole box (fitReversePoiseuille).
 //
+// couette: no body force; the same two walls, sliding (the component defaults to the one axis along
+// which the walls move); a line is fitted over the central part (CouetteFit.hpp: fitCouette). When
+// the table has the shear stress column sigma<component><axis> (binnedProfile with stress yes), the
+// viscosity is <sigma> / shear rate over the fitted range, and nu = eta / rho with rho the central
+// density.
+//
 // Bins with fewer than 3 particle-samples (no velocity) are left out. When the error column is all
 // zero (a snapshot profile) the fit uses unit weights and scales the covariance by chi2/dof; when only
 // some errors are zero, those bins are left out (too few blocks saw particles there) and counted.
 //
 // Results: postProcessing/fitSlipLength/<time>/fit.dat, a dictionary. Every selected time is fitted
 // before anything is written, so an error leaves the case as it was.
+#include "analysis/CouetteFit.hpp"
 #include "analysis/PoiseuilleFit.hpp"
 #include "io/Dictionary.hpp"
 #include "run/DpdProperties.hpp"
@@ -34,7 +44,7 @@
 
 namespace dpd {
 
-enum class FitSlipLengthMode { poiseuille, reversePoiseuille };
+enum class FitSlipLengthMode { poiseuille, reversePoiseuille, couette };
 
 // The dictionary with the model it refers to; read once, used for every time.
 struct FitSlipLengthSetup {
@@ -45,6 +55,8 @@ struct FitSlipLengthSetup {
     std::string profile;              // table name without .dat
     int component = -1;               // -1 until resolved from the body force
     double exclude = 0.0;
+    bool hasFitRange = false;         // couette: fitRange given
+    double fitLow = 0.0, fitHigh = 0.0;
 };
 
 // Checks keywords (unknown ones, mode, component, exclude) and resolves the component and the body
@@ -64,6 +76,10 @@ struct FitSlipLengthResult {
     int binsWithoutError = 0;     // zero error among positive ones: left out
     PoiseuilleFitResult poiseuille;     // mode poiseuille
     ReversePoiseuilleResult reverse;    // mode reversePoiseuille
+    CouetteFitResult couette;           // mode couette
+    bool hasStress = false;             // couette: the table had the shear stress column
+    std::string stressColumn;
+    StressViscosity stress;
     double boxLow = 0.0, boxLength = 0.0;  // reversePoiseuille: the periodic box along the axis
     // Kinetic-theory estimate for reference (NaN when there is no pair of mobile species).
     double densityCentral = 0.0;  // count-weighted mean density of the central half of the bins

@@ -47,10 +47,6 @@ void requireEnoughPoints(const Profile1D& s, const std::string& where) {
                                     " are needed (3 coefficients + 1 degree of freedom)");
 }
 
-// sqrt(grad^T C grad): the delta-method standard error of a function with gradient grad.
-double propagatedError(const Eigen::Vector3d& grad, const Eigen::MatrixXd& cov) {
-    return std::sqrt(grad.dot(cov * grad));
-}
 
 // nu = -g / (2 c2), hence dnu/dc2 = g / (2 c2^2) and only var(c2) enters. The `sign` is -1 where the
 // force is +g (curvature -g/(2 nu)) and +1 where it is -g.
@@ -61,26 +57,6 @@ struct Viscosity {
 Viscosity viscosityFromCurvature(const PolyFitResult& fit, double g, double sign) {
     const double c2 = fit.coefficients(2);
     return {sign * g / (2.0 * c2), std::abs(g / (2.0 * c2 * c2)) * fit.standardError(2)};
-}
-
-// Navier slip at the wall y = yw with inward normal n (+1 lower wall, -1 upper wall):
-//   s     = c0 + c1 yw + c2 yw^2 - U_wall          ds/dc     = (1, yw, yw^2)
-//   gamma = n (c1 + 2 c2 yw)                        dgamma/dc = n (0, 1, 2 yw)
-//   beta  = s / gamma                               dbeta/dc  = (ds/dc - beta dgamma/dc) / gamma
-WallFitResult wallFit(const PolyFitResult& fit, double yw, double uWall, double inwardNormal) {
-    const Eigen::VectorXd& c = fit.coefficients;
-    WallFitResult w;
-    w.position = yw;
-    w.wallVelocity = uWall;
-    w.slipVelocity = fit.evaluate(yw) - uWall;
-    w.shearRate = inwardNormal * (c(1) + 2.0 * c(2) * yw);
-    w.slipLength = w.slipVelocity / w.shearRate;
-
-    const Eigen::Vector3d dSlip(1.0, yw, yw * yw);
-    const Eigen::Vector3d dShear = inwardNormal * Eigen::Vector3d(0.0, 1.0, 2.0 * yw);
-    w.slipVelocityErr = propagatedError(dSlip, fit.covariance);
-    w.slipLengthErr = propagatedError((dSlip - w.slipLength * dShear) / w.shearRate, fit.covariance);
-    return w;
 }
 
 PolyFitResult fitParabola(const Profile1D& s, bool scaleByChi2) {
@@ -104,6 +80,35 @@ Viscosity combine(Viscosity a, Viscosity b) {
 
 }  // namespace
 
+// For a fitted polynomial u(y) = sum_k c_k y^k, at the wall y = yw with inward normal n (+1 lower
+// wall, -1 upper wall):
+//   s     = u(yw) - U_wall                 ds/dc_k     = yw^k
+//   gamma = n u'(yw)                        dgamma/dc_k = n k yw^(k-1)
+//   beta  = s / gamma                       dbeta/dc    = (ds/dc - beta dgamma/dc) / gamma
+// and each error is the delta-method sqrt(grad^T C grad).
+WallFitResult navierSlipAtWall(const PolyFitResult& fit, double yw, double uWall, double inwardNormal) {
+    const Eigen::VectorXd& c = fit.coefficients;
+    const int n = static_cast<int>(c.size());
+    Eigen::VectorXd dSlip(n), dShear(n);
+    double power = 1.0;  // yw^k
+    for (int k = 0; k < n; ++k) {
+        dSlip(k) = power;
+        dShear(k) = k == 0 ? 0.0 : inwardNormal * k * std::pow(yw, k - 1);
+        power *= yw;
+    }
+    WallFitResult w;
+    w.position = yw;
+    w.wallVelocity = uWall;
+    w.slipVelocity = fit.evaluate(yw) - uWall;
+    w.shearRate = dShear.dot(c);
+    w.slipLength = w.slipVelocity / w.shearRate;
+    const auto error = [&](const Eigen::VectorXd& grad) { return std::sqrt(grad.dot(fit.covariance * grad)); };
+    w.slipVelocityErr = error(dSlip);
+    w.shearRateErr = error(dShear);
+    w.slipLengthErr = error((dSlip - w.slipLength * dShear) / w.shearRate);
+    return w;
+}
+
 PoiseuilleFitResult fitPoiseuille(const Profile1D& p, double g, double yLow, double yHigh, double exclude,
                                   double uWallLow, double uWallHigh) {
     const char* who = "fitPoiseuille";
@@ -122,8 +127,8 @@ PoiseuilleFitResult fitPoiseuille(const Profile1D& p, double g, double yLow, dou
     const Viscosity nu = viscosityFromCurvature(fit, g, -1.0);
     r.nu = nu.value;
     r.nuErr = nu.error;
-    r.lower = wallFit(fit, yLow, uWallLow, +1.0);
-    r.upper = wallFit(fit, yHigh, uWallHigh, -1.0);
+    r.lower = navierSlipAtWall(fit, yLow, uWallLow, +1.0);
+    r.upper = navierSlipAtWall(fit, yHigh, uWallHigh, -1.0);
     r.centre = -c(1) / (2.0 * c(2));
     r.maxVelocity = fit.evaluate(r.centre);
     r.dof = fit.dof;

@@ -33,7 +33,13 @@ struct WallFitResult {
     double slipLength = 0.0;       // beta = slipVelocity / shearRate
     double slipLengthErr = 0.0;
     double shearRate = 0.0;        // du/dn at the wall, n pointing into the fluid (> 0 for g > 0)
+    double shearRateErr = 0.0;
 };
+
+struct PolyFitResult;
+// Navier slip at the wall y = yw of a fitted polynomial profile (any degree), with inward normal
+// +1 (lower wall) or -1 (upper wall), and delta-method errors from the fit's covariance.
+WallFitResult navierSlipAtWall(const PolyFitResult& fit, double yw, double uWall, double inwardNormal);
 
 struct PoiseuilleFitResult {
     double nu = 0.0;     // kinematic viscosity, -g / (2 c2)

@@ -36,6 +36,7 @@ WallCounters DpdVvIntegrator::step(System& sys) {
         p.fx[i] += fx_[i]; p.fy[i] += fy_[i]; p.fz[i] += fz_[i];
         p.vx[i] = vx_[i]; p.vy[i] = vy_[i]; p.vz[i] = vz_[i];
     }
+    sys.completeWalls();
     return walls;
 }
 

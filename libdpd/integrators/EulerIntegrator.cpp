@@ -10,6 +10,7 @@ WallCounters EulerIntegrator::step(System& sys) {
     kick(sys, sys.dt());   // velocities with the old forces
     const WallCounters walls = endMove(sys);
     sys.computeForces();
+    sys.completeWalls();
     return walls;
 }
 

@@ -32,6 +32,7 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         p.vy[i] = hy_[i] + halfDt * p.fy[i];
         p.vz[i] = hz_[i] + halfDt * p.fz[i];
     }
+    sys.completeWalls();
     return walls;
 }
 

@@ -16,6 +16,7 @@ WallCounters ShardlowIntegrator::step(System& sys) {
     computeConservativeForces(sys);
     kick(sys, 0.5 * dt);
     forcesStep_ = sys.step;
+    sys.completeWalls();
     return walls;
 }
 

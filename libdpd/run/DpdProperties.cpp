@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace dpd {
 
@@ -36,10 +37,47 @@ SpeciesTable readSpecies(const Dictionary& d) {
     return table;
 }
 
-PairTable readPairs(const Dictionary& d, const SpeciesTable& species) {
+// One pair entry: { a ..; gamma ..; }, where `a` may be left out to be mixed from the like pairs.
+struct PairEntry {
+    bool given = false;
+    bool hasA = false;
+    PairCoeffs coeffs;
+};
+
+// Mixing rule (METHODS.md section 1): a pair not given, or given without `a`, takes
+// a_ij = sqrt(a_ii a_jj) from the like pairs (and, when not given at all, gamma_ij = sqrt(gamma_ii
+// gamma_jj), which is the common gamma when the like pairs share one). Each use goes into `notes`.
+void mixPair(const Dictionary& d, const SpeciesTable& species, const std::vector<PairEntry>& entries, int a, int b,
+             PairTable& table, std::vector<std::string>& notes) {
+    const int n = species.size();
+    const PairEntry& e = entries[a * n + b];
+    const PairEntry& aa = entries[a * n + a];
+    const PairEntry& bb = entries[b * n + b];
+    const std::string name = species[a].name + "-" + species[b].name;
+    if (!(aa.hasA && bb.hasA))
+        d.fail("pairCoeffs", "no coefficient a for the pair " + name + ": give " + name + " { a ...; gamma ...; }, or both " +
+                                 species[a].name + "-" + species[a].name + " and " + species[b].name + "-" +
+                                 species[b].name + " so that a is mixed as sqrt(a_" + species[a].name + " a_" +
+                                 species[b].name + ")");
+    if (aa.coeffs.a < 0.0 || bb.coeffs.a < 0.0)
+        d.fail("pairCoeffs", "cannot mix a for the pair " + name + ": the like pairs have a negative a");
+    PairCoeffs c = e.coeffs;
+    c.a = std::sqrt(aa.coeffs.a * bb.coeffs.a);
+    std::ostringstream note;
+    note << name << ": a = sqrt(" << aa.coeffs.a << " x " << bb.coeffs.a << ") = " << c.a;
+    if (!e.given) {
+        c.gamma = std::sqrt(aa.coeffs.gamma * bb.coeffs.gamma);
+        note << ", gamma = sqrt(" << aa.coeffs.gamma << " x " << bb.coeffs.gamma << ") = " << c.gamma;
+    }
+    notes.push_back(note.str() + " (mixed)");
+    table.set(a, b, c);
+}
+
+PairTable readPairs(const Dictionary& d, const SpeciesTable& species, std::vector<std::string>& notes) {
     const Dictionary& pd = d.subDict("pairCoeffs");
-    PairTable table(species.size());
-    std::vector<bool> given(species.size() * species.size(), false);
+    const int n = species.size();
+    PairTable table(n);
+    std::vector<PairEntry> entries(n * n);
     for (const std::string& key : pd.keys()) {
         const auto dash = key.find('-');
         const int a = dash == std::string::npos ? -1 : species.indexOf(key.substr(0, dash));
@@ -48,13 +86,22 @@ PairTable readPairs(const Dictionary& d, const SpeciesTable& species) {
         if (!pd.isDict(key)) pd.fail(key, "expected a sub-dictionary { a ...; gamma ...; }");
         const Dictionary& c = pd.subDict(key);
         c.checkKeys({"a", "gamma"});
-        table.set(a, b, {c.get<double>("a"), c.getNonNegative<double>("gamma"), 0.0, true});
-        given[a * species.size() + b] = given[b * species.size() + a] = true;
+        PairEntry e;
+        e.given = true;
+        e.hasA = c.found("a");
+        if (a == b && !e.hasA) c.fail("a", "a like pair needs its a (only unlike pairs can be mixed)");
+        e.coeffs = {e.hasA ? c.get<double>("a") : 0.0, c.getNonNegative<double>("gamma"), 0.0, true};
+        entries[a * n + b] = entries[b * n + a] = e;
+        table.set(a, b, e.coeffs);
     }
-    for (int a = 0; a < species.size(); ++a)
-        for (int b = a; b < species.size(); ++b)
-            if (!given[a * species.size() + b] && !(species[a].frozen && species[b].frozen))
-                d.fail("pairCoeffs", "no coefficients for the pair " + species[a].name + "-" + species[b].name);
+    for (int a = 0; a < n; ++a)
+        for (int b = a; b < n; ++b) {
+            const PairEntry& e = entries[a * n + b];
+            if (e.given && e.hasA) continue;
+            if (species[a].frozen && species[b].frozen) continue;  // never interact
+            if (a == b) d.fail("pairCoeffs", "no coefficients for the pair " + species[a].name + "-" + species[b].name);
+            mixPair(d, species, entries, a, b, table, notes);
+        }
     return table;
 }
 
@@ -94,8 +141,8 @@ BodyForce readBodyForce(const Dictionary& d, int dimension) {
     return f;
 }
 
-PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dimension) {
-    wd.checkKeys({"type", "point", "normal", "velocity", "reflection"});
+PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dimension, double cutoff) {
+    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha"});
     const std::string type = wd.get<std::string>("type");
     if (type != "plane") wd.fail("type", "expected plane (the only wall shape so far)");
     PlanarWall w;
@@ -107,21 +154,25 @@ PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dim
     if (dimension == 2 && w.normal.y() != 0.0) wd.fail("normal", "a 2-D scene lies in the x-z plane: the y component must be 0");
     w.velocity = wd.getOrDefault<Eigen::Vector3d>("velocity", Eigen::Vector3d::Zero());
     if (std::abs(w.velocity.dot(w.normal)) > 1e-12) wd.fail("velocity", "a wall can only slide in its own plane");
+    if (dimension == 2 && w.velocity.y() != 0.0) wd.fail("velocity", "a 2-D scene lies in the x-z plane: the y component must be 0");
     try {
         w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", "bounceBack"));
     } catch (const std::invalid_argument& e) {
         wd.fail("reflection", e.what());
     }
+    // The bounce layer's thickness in cutoffs (METHODS.md 3.2 step 5: about 0.06-0.1 works).
+    if (w.rule == ReflectionRule::bounceLayer) w.layer = wd.getPositive<double>("alpha") * cutoff;
+    else if (wd.found("alpha")) wd.fail("alpha", "only a wall with reflection bounceLayer has a layer thickness alpha");
     return w;
 }
 
-WallSet readWalls(const Dictionary& d, int dimension) {
+WallSet readWalls(const Dictionary& d, int dimension, double cutoff) {
     WallSet walls;
     if (!d.found("walls")) return walls;
     const Dictionary& wd = d.subDict("walls");
     for (const std::string& name : wd.keys()) {
         if (!wd.isDict(name)) wd.fail(name, "each wall is a sub-dictionary");
-        walls.add(readPlanarWall(wd.subDict(name), name, dimension));
+        walls.add(readPlanarWall(wd.subDict(name), name, dimension, cutoff));
     }
     return walls;
 }
@@ -154,10 +205,10 @@ DpdModel readDpdModel(const Dictionary& d) {
     if (seed < 0) d.fail("seed", "must not be negative");
     m.seed = static_cast<std::uint64_t>(seed);
     m.species = readSpecies(d);
-    m.pairs = readPairs(d, m.species);
+    m.pairs = readPairs(d, m.species, m.pairNotes);
     m.integrator = readIntegrator(d);
     m.bodyForce = readBodyForce(d, m.dimension);
-    m.walls = readWalls(d, m.dimension);
+    m.walls = readWalls(d, m.dimension, m.cutoff);
     m.stability = readStability(d);
     return m;
 }

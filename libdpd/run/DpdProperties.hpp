@@ -8,9 +8,14 @@
 //   weightExponent 2;             // s in w_D = (1 - r/rc)^s; 2 is standard
 //   species   { fluid { frozen no; } wall { frozen yes; } }
 //   pairCoeffs { fluid-fluid { a 18.75; gamma 4.5; } fluid-wall { a 18.75; gamma 4.5; } }
+//              // an unlike pair left out (or given without a) is mixed: a_ij = sqrt(a_ii a_jj)
+//              // (and, if left out, gamma_ij = sqrt(gamma_ii gamma_jj)); e.g. wall-wall { a 5; gamma 4.5; }
 //   integrator { type GrootWarren; lambda 0.65; }   // Euler | GrootWarren (lambda) | DPDVV | Shardlow
 //   bodyForce  { type uniform; value (0.02 0 0); }     // none | uniform | reversePoiseuille (+ gradientAxis z)
 //   walls      { lower { type plane; point (0 0 -20); normal (0 0 1); velocity (0 0 0); reflection bounceBack; } }
+//              // reflection: none | specular | bounceBack | maxwellian | bounceForward
+//              //             | bounceLayer (with alpha 0.1: the layer is alpha x cutoff thick)
+//              // frozen particles behind a wall move with its velocity
 //   stability  { maxKTRatio 2; maxInsideWalls 0; }   // optional
 //   geometry   { type imageMask; file "constant/geometry/mask.png"; ... }   // optional: a solid of any
 //                                                 // shape (geometry/GeometryDictionary.hpp)
@@ -24,6 +29,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace dpd {
 
@@ -48,6 +54,7 @@ struct DpdModel {
     BodyForce bodyForce;
     WallSet walls;
     StabilitySettings stability;
+    std::vector<std::string> pairNotes;  // pairs whose coefficients were mixed, for the log
 };
 
 // Reads and checks the dictionary; every error is an InputError naming file, line and keyword.

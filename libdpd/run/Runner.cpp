@@ -67,8 +67,18 @@ Snapshot snapshotOf(const System& sys) {
     return s;
 }
 
+void printWalls(std::ostream& log, const System& sys) {
+    for (std::size_t w = 0; w < sys.walls.size(); ++w) {
+        const PlanarWall& wall = sys.walls[w];
+        log << "    " << wall.name << ": reflection " << reflectionRuleName(wall.rule);
+        if (wall.rule == ReflectionRule::bounceLayer) log << " (layer " << wall.layer << ")";
+        log << ", velocity " << vectorText(wall.velocity) << ", " << sys.frozenPerWall()[w]
+            << " frozen particles moving with it\n";
+    }
+}
+
 void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const Integrator& integrator,
-                 const RunControl& control, std::size_t nFunctions) {
+                 const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes) {
     const std::size_t mobile = sys.countMobile();
     log << "Case           : " << caseDir << "\n"
         << "Threads        : " << omp_get_max_threads() << "\n"
@@ -78,8 +88,10 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
         << "Integrator     : " << integrator.name() << ", deltaT " << control.deltaT << "\n"
         << "Pair force     : dissipative + random" << (sys.usesConservativeForce() ? " + conservative" : "")
         << (sys.forceParameters.weightExponent == 2.0 ? "" : ", generalised weight") << "\n"
-        << "Walls          : " << sys.walls.size() << "\n"
-        << "Body force     : " << (sys.bodyForce.active() ? vectorText(sys.bodyForce.g) : std::string("none")) << "\n"
+        << "Walls          : " << sys.walls.size() << "\n";
+    printWalls(log, sys);
+    for (const std::string& note : pairNotes) log << "Pair mixed     : " << note << "\n";
+    log << "Body force     : " << (sys.bodyForce.active() ? vectorText(sys.bodyForce.g) : std::string("none")) << "\n"
         << "Sampling       : " << nFunctions << " function object(s)\n\n";
 }
 
@@ -100,7 +112,7 @@ public:
         const bool restartForces = forcesStored(sys.particles);
         sys.sortByCell();
         if (!restartForces) sys.computeForces();
-        printHeader(log_, caseDir_, sys, *integrator, control, functions.size());
+        printHeader(log_, caseDir_, sys, *integrator, control, functions.size(), model.pairNotes);
         loop(sys, control, model, functions, *integrator);
     }
 
@@ -111,13 +123,12 @@ private:
         const auto nSteps = static_cast<std::int64_t>(std::llround((control.endTime - sys.time) / control.deltaT));
         const std::int64_t firstStep = sys.step;
         lastGood_ = snapshotOf(sys);
-        std::vector<long> reflected(sys.walls.size(), 0);
+        WallCounters interval;
         const auto t0 = Clock::now();
         auto tReport = t0;
         std::int64_t stepsAtReport = 0;
         for (std::int64_t k = 1; k <= nSteps; ++k) {
-            const WallCounters counts = integrator.step(sys);
-            for (std::size_t w = 0; w < counts.reflected.size(); ++w) reflected[w] += counts.reflected[w];
+            interval.accumulate(integrator.step(sys));
             functions.execute(sys);
             const bool report = k % control.reportIntervalSteps == 0 || k == nSteps;
             if (report) {
@@ -127,8 +138,8 @@ private:
                 tReport = now;
                 stepsAtReport = k;
                 const MonitorReport m = monitor(sys, flowAxis);
-                printReport(sys, m, reflected, elapsed, rate, nSteps - k);
-                std::fill(reflected.begin(), reflected.end(), 0);
+                printReport(sys, m, interval, elapsed, rate, nSteps - k);
+                interval = WallCounters();
                 checkStability(sys, m, model);
                 lastGood_ = snapshotOf(sys);
             }
@@ -140,15 +151,19 @@ private:
              << " particle-steps/s\nEnd\n";
     }
 
-    void printReport(const System& sys, const MonitorReport& m, const std::vector<long>& reflected, double elapsed,
+    void printReport(const System& sys, const MonitorReport& m, const WallCounters& walls, double elapsed,
                      double stepsPerSecond, std::int64_t stepsLeft) {
         log_ << "Time = " << timeName(sys.time) << "  (step " << sys.step << ")\n"
              << "    kT = " << std::setprecision(6) << m.kT << "   momentum = " << vectorText(m.momentum)
              << "   meanVelocity = " << vectorText(m.meanVelocity) << "\n";
         if (!sys.walls.empty()) {
-            log_ << "    walls: reflected";
-            for (std::size_t w = 0; w < sys.walls.size(); ++w) log_ << " " << sys.walls[w].name << " " << reflected[w];
-            log_ << "; inside walls " << m.insideWalls << "\n";
+            // Since the last report: particles each wall's rule returned, and particles found behind
+            // its plane after a move (for a bounce layer each of these is a failure of the layer).
+            log_ << "    walls since last report:";
+            for (std::size_t w = 0; w < sys.walls.size(); ++w)
+                log_ << " " << sys.walls[w].name << " returned " << (w < walls.reflected.size() ? walls.reflected[w] : 0)
+                     << " crossed " << (w < walls.crossed.size() ? walls.crossed[w] : 0) << ";";
+            log_ << " left inside after a step " << walls.insideAfter << "; inside walls now " << m.insideWalls << "\n";
         }
         log_ << "    ExecutionTime = " << std::setprecision(5) << elapsed << " s   steps/s = " << std::setprecision(4)
              << stepsPerSecond << "   particle-steps/s = " << std::setprecision(4)

@@ -60,6 +60,7 @@ void System::initialise() {
             particles.ry[i] = 0.5 * (box.lo.y() + box.hi.y());
             particles.vy[i] = 0.0;
         }
+    frozenPerWall_ = walls.assignFrozenVelocities(particles, frozenOfSpecies_);
     wrapPositions();
     initialised_ = true;
 }
@@ -93,7 +94,12 @@ WallCounters System::applyWalls() {
     if (walls.empty()) return {};
     const ScopedTimer timer(stepTimes ? &stepTimes->walls : nullptr);
     return walls.reflect(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
-                         forceParameters.kT);
+                         forceParameters.kT, deferredBounces_);
+}
+
+void System::completeWalls() {
+    walls.completeBounceForward(particles, box, deferredBounces_);
+    deferredBounces_.clear();
 }
 
 std::size_t System::countMobile() const {

@@ -41,13 +41,15 @@ public:
     StepTimes* stepTimes = nullptr;  // when set, the methods below add their times to it
 
     // Call once the fields above are set: lays out the cells, fixes sigma from fluctuation-
-    // dissipation, marks frozen pairs as non-interacting, and picks the pair evaluator that does just
-    // the terms this scene uses.
+    // dissipation, marks frozen pairs as non-interacting, picks the pair evaluator that does just
+    // the terms this scene uses, and gives the frozen particles behind each wall the wall's velocity.
     void initialise();
 
     bool isFrozen(std::size_t i) const { return frozenOfSpecies_[particles.species[i]] != 0; }
     const std::vector<std::uint8_t>& frozenOfSpecies() const { return frozenOfSpecies_; }
     const PairRandom& random() const { return random_; }
+    // How many frozen particles each wall owns (moves with its velocity), as set by initialise().
+    const std::vector<long>& frozenPerWall() const { return frozenPerWall_; }
     const CellList& cells() const { return cells_; }
     bool usesConservativeForce() const { return conservative_; }
     double dt() const { return forceParameters.dt; }
@@ -59,8 +61,12 @@ public:
     // Forces at the current positions and velocities: pair forces (keyed to the current step's random
     // numbers) plus the body force. Requires sortByCell() since the last move.
     void computeForces();
-    // Reflects fluid particles that crossed a wall during the last move.
+    // Reflects fluid particles that crossed a wall during the last move (call before wrapPositions).
     WallCounters applyWalls();
+    // Finishes what the walls left for the end of the step (bounce-forward crossings: mirrored and
+    // reversed with the velocity the step gave them). Every integrator calls it once the velocities
+    // of the step are complete.
+    void completeWalls();
     // Moves the clock on by one step.
     void advanceClock() { ++step; time += forceParameters.dt; }
 
@@ -73,6 +79,8 @@ private:
     PairRandom random_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     PairKernel pairKernel_ = nullptr;
+    std::vector<DeferredBounce> deferredBounces_;
+    std::vector<long> frozenPerWall_;
     bool conservative_ = true;
     bool initialised_ = false;
 };

@@ -35,6 +35,14 @@ void BinAccumulator::sample(const Particles& p) {
     ++samples_;
 }
 
+void BinAccumulator::addVirial(const std::vector<SymmetricTensor>& virial) {
+    if (blocks_.empty() || virial.size() != blocks_.back().size())
+        throw std::logic_error("BinAccumulator::addVirial: take a sample first, with one tensor per bin");
+    std::vector<BinSums>& block = blocks_.back();
+    for (std::size_t b = 0; b < virial.size(); ++b)
+        for (int c = 0; c < 6; ++c) block[b].s[BinSums::kVirial + c] += virial[b][c];
+}
+
 BinAccumulator BinAccumulator::fromBlocks(const BinLayout& layout, std::vector<std::uint8_t> speciesMask,
                                           long blockSamples, std::vector<std::vector<BinSums>> blocks,
                                           std::vector<long> samplesPerBlock) {

@@ -6,6 +6,9 @@
 // temperature be measured about a mean velocity that varies linearly across the bin, so a sheared
 // flow does not heat the measured kT by (du/dx)^2 (bin width)^2 / 12.
 //
+// With stress sampling on, every sample also adds the sums of the velocity cross products v_a v_b and
+// the pair virial of the bin (PairVirial.hpp): the pressure tensor and the shear stress follow.
+//
 // Sums are kept in blocks of `blockSamples` samples; the spread of the block means gives honest
 // error bars for correlated data (a block much longer than the correlation time is one independent
 // measurement).
@@ -21,8 +24,12 @@ namespace dpd {
 
 // The sums of one bin over one block of samples.
 struct BinSums {
-    static constexpr int kFields = 12;
-    // count, sum vx vy vz, sum vx^2 vy^2 vz^2, sum x, sum x^2, sum vx x, vy x, vz x
+    static constexpr int kBasicFields = 12;  // what every profile has (format dpdFoamLike-bins-1)
+    static constexpr int kFields = 21;
+    static constexpr int kCross = 12;        // first of sum vx vy, vx vz, vy vz
+    static constexpr int kVirial = 15;       // first of the virial xx yy zz xy xz yz
+    // count, sum vx vy vz, sum vx^2 vy^2 vz^2, sum x, sum x^2, sum vx x, vy x, vz x,
+    // sum vx vy, vx vz, vy vz, virial sums W_xx W_yy W_zz W_xy W_xz W_yz
     std::array<double, kFields> s{};
     void add(double x, double vx, double vy, double vz) {
         s[0] += 1.0;
@@ -30,8 +37,18 @@ struct BinSums {
         s[4] += vx * vx; s[5] += vy * vy; s[6] += vz * vz;
         s[7] += x; s[8] += x * x;
         s[9] += vx * x; s[10] += vy * x; s[11] += vz * x;
+        s[12] += vx * vy; s[13] += vx * vz; s[14] += vy * vz;
     }
 };
+
+// Symmetric tensor components in the order xx yy zz xy xz yz.
+using SymmetricTensor = std::array<double, 6>;
+// Index of component (a, b) in a SymmetricTensor.
+inline int tensorIndex(int a, int b) {
+    if (a == b) return a;
+    const int lo = a < b ? a : b, hi = a < b ? b : a;
+    return lo == 0 ? (hi == 1 ? 3 : 4) : 5;
+}
 
 struct BinLayout {
     int axis = 2;
@@ -50,6 +67,11 @@ public:
 
     // Adds one sample of the particles whose species is in the mask.
     void sample(const Particles& p);
+    // Adds the pair virial per bin (nBins tensors) to the sample just taken.
+    void addVirial(const std::vector<SymmetricTensor>& virial);
+    // The flow axis of the shear stress reported, or -1 when no stress is sampled.
+    int stressFlowAxis() const { return stressFlowAxis_; }
+    void setStressFlowAxis(int axis) { stressFlowAxis_ = axis; }
     const BinLayout& layout() const { return layout_; }
     long samples() const { return samples_; }
     long blockSamples() const { return blockSamples_; }
@@ -66,6 +88,7 @@ private:
     std::vector<std::uint8_t> speciesMask_;
     long blockSamples_ = 1000;
     long samples_ = 0;
+    int stressFlowAxis_ = -1;
     std::vector<std::vector<BinSums>> blocks_;
     std::vector<long> samplesPerBlock_;
 };

@@ -21,7 +21,8 @@ void writeBins(const std::string& file, const BinAccumulator& acc, int dimension
     w.writeDoubles("blocks", flat, {static_cast<hsize_t>(blocks.size()), static_cast<hsize_t>(nBins),
                                     static_cast<hsize_t>(BinSums::kFields)});
     w.writeInt64("samplesPerBlock", perBlock, {static_cast<hsize_t>(perBlock.size())});
-    w.writeAttribute("/", "format", "dpdFoamLike-bins-1");
+    w.writeAttribute("/", "format", "dpdFoamLike-bins-2");
+    w.writeAttribute("/", "stressFlowAxis", acc.stressFlowAxis());
     w.writeAttribute("/", "axis", acc.layout().axis);
     w.writeAttribute("/", "nBins", nBins);
     w.writeAttribute("/", "lo", acc.layout().lo);
@@ -36,8 +37,11 @@ void writeBins(const std::string& file, const BinAccumulator& acc, int dimension
 
 StoredBins readBins(const std::string& file) {
     Hdf5Reader r(file);
-    if (!r.hasAttribute("/", "format") || r.attributeString("/", "format") != "dpdFoamLike-bins-1")
+    // Format 1 had the 12 basic fields per bin and no stress; format 2 has all 21 and the stress axis.
+    const std::string format = r.hasAttribute("/", "format") ? r.attributeString("/", "format") : "";
+    if (format != "dpdFoamLike-bins-1" && format != "dpdFoamLike-bins-2")
         throw IoError(file + ": not a dpdFoamLike bins file (attribute 'format' missing or different)");
+    const hsize_t fields = format == "dpdFoamLike-bins-1" ? BinSums::kBasicFields : BinSums::kFields;
     BinLayout layout;
     layout.axis = static_cast<int>(r.attributeInt("/", "axis"));
     layout.nBins = static_cast<int>(r.attributeInt("/", "nBins"));
@@ -46,19 +50,21 @@ StoredBins readBins(const std::string& file) {
     std::vector<hsize_t> dims;
     const std::vector<double> flat = r.readDoubles("blocks", &dims);
     const std::vector<std::int64_t> perBlock = r.readInt64("samplesPerBlock");
-    if (dims.size() != 3 || dims[1] != static_cast<hsize_t>(layout.nBins) || dims[2] != BinSums::kFields ||
+    if (dims.size() != 3 || dims[1] != static_cast<hsize_t>(layout.nBins) || dims[2] != fields ||
         perBlock.size() != dims[0])
-        throw IoError(file + ": dataset 'blocks' does not have the shape (nBlocks, nBins, 12)");
+        throw IoError(file + ": dataset 'blocks' does not have the shape (nBlocks, nBins, " + std::to_string(fields) + ")");
     std::vector<std::vector<BinSums>> blocks(dims[0], std::vector<BinSums>(layout.nBins));
     std::size_t k = 0;
     for (auto& block : blocks)
         for (BinSums& b : block)
-            for (double& v : b.s) v = flat[k++];
+            for (hsize_t f = 0; f < fields; ++f) b.s[f] = flat[k++];
     std::vector<std::uint8_t> mask;
     for (auto m : r.attributeInts("/", "speciesMask")) mask.push_back(static_cast<std::uint8_t>(m));
     StoredBins out;
     out.accumulator = BinAccumulator::fromBlocks(layout, mask, r.attributeInt("/", "blockSamples"), std::move(blocks),
                                                  std::vector<long>(perBlock.begin(), perBlock.end()));
+    if (format == "dpdFoamLike-bins-2")
+        out.accumulator.setStressFlowAxis(static_cast<int>(r.attributeInt("/", "stressFlowAxis")));
     out.dimension = static_cast<int>(r.attributeInt("/", "dimension"));
     out.crossSection = r.attributeDouble("/", "crossSection");
     out.time = r.attributeDouble("/", "time");

@@ -1,17 +1,46 @@
 #include "sampling/BinProfile.hpp"
 #include "sampling/BlockStatistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dpd {
 
 namespace {
 
-// What one bin says over a set of sums: density, velocity, temperature.
+// What one bin says over a set of sums: density, velocity, temperature (and stress, when sampled).
 struct BinEstimate {
     double density = 0.0, ux = 0.0, uy = 0.0, uz = 0.0, kT = 0.0;
     bool valid = false;
+    StressPoint stress;
 };
+
+// The stress of the bin: the kinetic tensor rho cov(v_a, v_b) (cov about a mean velocity varying
+// linearly across the bin, as for kT) plus the virial W_ab / (samples x volume); sigma = -P.
+StressPoint stressEstimate(const BinSums& b, long samples, double binMeasure, int dimension, int flowAxis, int binAxis) {
+    StressPoint s;
+    if (samples <= 0) return s;
+    const double volume = samples * binMeasure;
+    const double n = b.s[0];
+    const auto kinetic = [&](int a, int c) {
+        if (n < 3) return 0.0;
+        const double meanX = b.s[7] / n, varX = b.s[8] / n - meanX * meanX;
+        const double va = b.s[1 + a] / n, vc = b.s[1 + c] / n;
+        const double second = a == c ? b.s[4 + a] : b.s[BinSums::kCross + tensorIndex(a, c) - 3];
+        const double cov = second / n - va * vc;
+        const double covA = b.s[9 + a] / n - va * meanX, covC = b.s[9 + c] / n - vc * meanX;
+        return (n / volume) * (varX > 0.0 ? cov - covA * covC / varX : cov);
+    };
+    const auto virial = [&](int a, int c) { return b.s[BinSums::kVirial + tensorIndex(a, c)] / volume; };
+    s.shearKinetic = -kinetic(flowAxis, binAxis);
+    s.shearVirial = -virial(flowAxis, binAxis);
+    s.shear = s.shearKinetic + s.shearVirial;
+    double trace = 0.0;
+    for (int a = 0; a < 3; ++a)
+        if (dimension == 3 || a != 1) trace += kinetic(a, a) + virial(a, a);
+    s.pressure = trace / dimension;
+    return s;
+}
 
 BinEstimate estimate(const BinSums& b, long samples, double binMeasure, int dimension) {
     BinEstimate e;
@@ -35,13 +64,43 @@ BinEstimate estimate(const BinSums& b, long samples, double binMeasure, int dime
     return e;
 }
 
+// The stress of bin b over all samples, with errors from the spread over the complete blocks.
+StressPoint stressProfilePoint(const BinAccumulator& acc, int b, const std::vector<std::size_t>& complete, bool errors,
+                               const BinSums& total, double binMeasure, int dimension, int flowAxis) {
+    const int axis = acc.layout().axis;
+    StressPoint s = stressEstimate(total, acc.samples(), binMeasure, dimension, flowAxis, axis);
+    if (!errors) return s;
+    std::vector<double> shear, kinetic, virial, pressure;
+    for (std::size_t k : complete) {
+        const StressPoint e =
+            stressEstimate(acc.blocks()[k][b], acc.samplesPerBlock()[k], binMeasure, dimension, flowAxis, axis);
+        shear.push_back(e.shear);
+        kinetic.push_back(e.shearKinetic);
+        virial.push_back(e.shearVirial);
+        pressure.push_back(e.pressure);
+    }
+    s.shearErr = standardErrorOfMean(shear);
+    s.shearKineticErr = standardErrorOfMean(kinetic);
+    s.shearVirialErr = standardErrorOfMean(virial);
+    s.pressureErr = standardErrorOfMean(pressure);
+    return s;
+}
+
 }  // namespace
+
+std::string shearStressName(int flowAxis, int binAxis) {
+    const char* names = "xyz";
+    return std::string("sigma") + names[std::min(flowAxis, binAxis)] + names[std::max(flowAxis, binAxis)];
+}
 
 BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int dimension) {
     const BinLayout& L = acc.layout();
     const double binMeasure = L.width() * crossSection;
+    const int flowAxis = acc.stressFlowAxis();
     BinProfile out;
     out.samples = acc.samples();
+    out.hasStress = flowAxis >= 0;
+    if (out.hasStress) out.stressName = shearStressName(flowAxis, L.axis);
     // Error bars from complete blocks only: a partial block has a different variance.
     std::vector<std::size_t> complete;
     for (std::size_t k = 0; k < acc.blocks().size(); ++k)
@@ -68,6 +127,8 @@ BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int di
         out.uxErr.push_back(standardErrorOfMean(ux)); out.uyErr.push_back(standardErrorOfMean(uy)); out.uzErr.push_back(standardErrorOfMean(uz));
         out.kT.push_back(e.kT);
         out.kTErr.push_back(standardErrorOfMean(kT));
+        if (out.hasStress) out.stress.push_back(stressProfilePoint(acc, b, complete, out.blocksForErrors > 0, total,
+                                                                   binMeasure, dimension, flowAxis));
     }
     return out;
 }

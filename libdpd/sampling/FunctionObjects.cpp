@@ -3,6 +3,7 @@
 #include "io/Dictionary.hpp"
 #include "run/System.hpp"
 #include "sampling/BinAccumulatorFile.hpp"
+#include "sampling/PairVirial.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -11,11 +12,11 @@ namespace dpd {
 
 namespace {
 
-int readAxis(const Dictionary& d, const System& sys) {
-    const std::string s = d.get<std::string>("axis");
+int readAxis(const Dictionary& d, const System& sys, const std::string& key = "axis") {
+    const std::string s = d.get<std::string>(key);
     const int axis = s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1;
-    if (axis < 0) d.fail("axis", "expected x, y or z, not '" + s + "'");
-    if (!sys.box.isActiveAxis(axis)) d.fail("axis", "a 2-D scene has no y axis");
+    if (axis < 0) d.fail(key, "expected x, y or z, not '" + s + "'");
+    if (!sys.box.isActiveAxis(axis)) d.fail(key, "a 2-D scene has no y axis");
     return axis;
 }
 
@@ -34,7 +35,8 @@ std::vector<std::uint8_t> readSpeciesMask(const Dictionary& d, const System& sys
 }
 
 BinnedProfileFunction readBinnedProfile(const Dictionary& d, const std::string& name, const System& sys) {
-    d.checkKeys({"type", "axis", "nBins", "min", "max", "species", "startTime", "sampleInterval", "samplesPerBlock"});
+    d.checkKeys({"type", "axis", "nBins", "min", "max", "species", "startTime", "sampleInterval", "samplesPerBlock",
+                 "stress", "flowAxis"});
     BinLayout layout;
     layout.axis = readAxis(d, sys);
     layout.nBins = d.getPositive<int>("nBins");
@@ -47,6 +49,13 @@ BinnedProfileFunction readBinnedProfile(const Dictionary& d, const std::string& 
     f.sampleInterval = d.found("sampleInterval") ? d.getPositive<long>("sampleInterval") : 1;
     const long perBlock = d.found("samplesPerBlock") ? d.getPositive<long>("samplesPerBlock") : 1000;
     f.accumulator = BinAccumulator(layout, readSpeciesMask(d, sys), perBlock);
+    if (d.getOrDefault<bool>("stress", false)) {
+        const int flow = readAxis(d, sys, "flowAxis");
+        if (flow == layout.axis) d.fail("flowAxis", "the flow axis must differ from the bin axis (the shear stress is sigma_flow,axis)");
+        f.accumulator.setStressFlowAxis(flow);
+    } else if (d.found("flowAxis")) {
+        d.fail("flowAxis", "only with stress yes");
+    }
     f.crossSection = sys.box.volume() / sys.box.length()[layout.axis];
     return f;
 }
@@ -70,6 +79,7 @@ void FunctionObjects::execute(const System& sys) {
         if (sys.time < f.startTime - 1e-9 * sys.dt()) continue;
         if (sys.step % f.sampleInterval != 0) continue;
         f.accumulator.sample(sys.particles);
+        if (f.accumulator.stressFlowAxis() >= 0) f.accumulator.addVirial(binnedPairVirial(sys, f.accumulator.layout()));
     }
 }
 

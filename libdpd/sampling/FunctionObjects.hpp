@@ -13,6 +13,8 @@
 //       startTime       100;        // samples from this time on (let the flow develop first)
 //       sampleInterval  1;          // steps between samples
 //       samplesPerBlock 1000;       // samples per block, for the error bars
+//       stress          yes;        // optional: also the shear stress sigma_{flowAxis, axis} (kinetic
+//       flowAxis        x;          // + virial) and the pressure (costs one pair traversal per sample)
 //   }
 //
 // At every write time the sums go to <time>/sampling/<name>.h5 (see BinAccumulatorFile.hpp), which

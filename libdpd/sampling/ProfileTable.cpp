@@ -69,18 +69,33 @@ std::vector<std::string> profileTableColumns(const std::string& axisName) {
     return {axisName, "density", "densityErr", "ux", "uxErr", "uy", "uyErr", "uz", "uzErr", "kT", "kTErr", "count"};
 }
 
+std::vector<std::string> stressTableColumns(const std::string& stressName) {
+    return {stressName,         stressName + "Err",       stressName + "Kinetic", stressName + "KineticErr",
+            stressName + "Virial", stressName + "VirialErr", "pressure",           "pressureErr"};
+}
+
 void writeProfileTable(const std::string& path, const std::string& axisName, const BinProfile& p) {
     const std::size_t n = p.centre.size();
     for (const auto* v : {&p.density, &p.densityErr, &p.ux, &p.uxErr, &p.uy, &p.uyErr, &p.uz, &p.uzErr, &p.kT,
                           &p.kTErr, &p.count})
         if (v->size() != n) throw std::invalid_argument("writeProfileTable: the profile's arrays differ in length");
+    if (p.hasStress && p.stress.size() != n)
+        throw std::invalid_argument("writeProfileTable: the profile's stress has the wrong length");
 
+    std::vector<std::string> names = profileTableColumns(axisName);
+    if (p.hasStress)
+        for (const std::string& name : stressTableColumns(p.stressName)) names.push_back(name);
     std::string text = "#";
-    for (const std::string& name : profileTableColumns(axisName)) text += " " + name;
+    for (const std::string& name : names) text += " " + name;
     text += "\n";
     for (std::size_t i = 0; i < n; ++i) {
-        const double row[] = {p.centre[i], p.density[i], p.densityErr[i], p.ux[i], p.uxErr[i], p.uy[i],
-                              p.uyErr[i],  p.uz[i],      p.uzErr[i],      p.kT[i], p.kTErr[i], p.count[i]};
+        std::vector<double> row = {p.centre[i], p.density[i], p.densityErr[i], p.ux[i], p.uxErr[i], p.uy[i],
+                                   p.uyErr[i],  p.uz[i],      p.uzErr[i],      p.kT[i], p.kTErr[i], p.count[i]};
+        if (p.hasStress) {
+            const StressPoint& s = p.stress[i];
+            row.insert(row.end(), {s.shear, s.shearErr, s.shearKinetic, s.shearKineticErr, s.shearVirial,
+                                   s.shearVirialErr, s.pressure, s.pressureErr});
+        }
         bool first = true;
         for (double x : row) {
             text += (first ? "" : " ") + formatNumber(x);

@@ -30,6 +30,9 @@ struct ProfileTableData {
 
 // The column names of a profile table along the given axis ("x", "y" or "z").
 std::vector<std::string> profileTableColumns(const std::string& axisName);
+// The columns a profile with stress adds after those: e.g. for sigmaxz
+//   sigmaxz sigmaxzErr sigmaxzKinetic sigmaxzKineticErr sigmaxzVirial sigmaxzVirialErr pressure pressureErr
+std::vector<std::string> stressTableColumns(const std::string& stressName);
 
 // Writes the profile atomically (temporary file in the same directory, then rename); creates the
 // parent directory if needed. IoError when it cannot write; std::invalid_argument when the profile's

@@ -10,8 +10,10 @@ ReflectionRule reflectionRuleFromName(const std::string& name) {
     if (name == "specular") return ReflectionRule::specular;
     if (name == "bounceBack") return ReflectionRule::bounceBack;
     if (name == "maxwellian") return ReflectionRule::maxwellian;
+    if (name == "bounceLayer") return ReflectionRule::bounceLayer;
+    if (name == "bounceForward") return ReflectionRule::bounceForward;
     throw std::invalid_argument("unknown reflection rule '" + name +
-                                "' (expected none, specular, bounceBack or maxwellian)");
+                                "' (expected none, specular, bounceBack, maxwellian, bounceLayer or bounceForward)");
 }
 
 std::string reflectionRuleName(ReflectionRule rule) {
@@ -20,6 +22,8 @@ std::string reflectionRuleName(ReflectionRule rule) {
         case ReflectionRule::specular: return "specular";
         case ReflectionRule::bounceBack: return "bounceBack";
         case ReflectionRule::maxwellian: return "maxwellian";
+        case ReflectionRule::bounceLayer: return "bounceLayer";
+        case ReflectionRule::bounceForward: return "bounceForward";
     }
     return "unknown";
 }

@@ -3,16 +3,25 @@
 // Fluid particles that end a step behind the plane are put back by mirroring their position across
 // it, and their velocity, taken relative to the wall's, is changed by the wall's reflection rule
 // (METHODS.md section 3.3).
+//
+// A moving wall slides in its own plane (its velocity has no normal component), so the plane maps
+// onto itself and only the wall's frozen particles move: they carry the wall's velocity
+// (WallSet::assignFrozenVelocities) and drift with it like any particle.
 #include <Eigen/Core>
 #include <string>
 
 namespace dpd {
 
 enum class ReflectionRule {
-    none,        // no reflection: the wall's frozen particles alone must keep the fluid out
-    specular,    // reverse the normal component (a perfectly slipping wall)
-    bounceBack,  // reverse the whole relative velocity (no slip)
-    maxwellian,  // diffuse: a new velocity drawn at the wall temperature, leaving the wall
+    none,           // no reflection: the wall's frozen particles alone must keep the fluid out
+    specular,       // reverse the normal component (a perfectly slipping wall)
+    bounceBack,     // reverse the whole relative velocity (no slip)
+    maxwellian,     // diffuse: a new velocity drawn at the wall temperature, leaving the wall
+    bounceLayer,    // a layer of thickness alpha r_c in front of the plane turns approaching particles
+                    // round (METHODS.md 3.2 steps 5-6); crossings of the plane are failures, counted
+    bounceForward,  // modified bounce-forward: mirror the penetrated position and reverse the velocity
+                    // the particle has there after the step (the step is finished at the penetrated
+                    // position, then the particle is put back)
 };
 
 ReflectionRule reflectionRuleFromName(const std::string& name);  // throws std::invalid_argument
@@ -24,6 +33,7 @@ struct PlanarWall {
     Eigen::Vector3d normal{0, 0, 1};  // unit vector into the fluid
     Eigen::Vector3d velocity{0, 0, 0};
     ReflectionRule rule = ReflectionRule::bounceBack;
+    double layer = 0.0;  // bounceLayer: thickness of the layer in front of the plane (alpha x cutoff)
 
     // Positive on the fluid side, negative inside the solid.
     double signedDistance(double x, double y, double z) const {

@@ -1,48 +1,150 @@
 #include "walls/WallSet.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dpd {
 
 namespace {
 
+Eigen::Vector3d velocityOf(const Particles& p, std::size_t i) { return {p.vx[i], p.vy[i], p.vz[i]}; }
+
+void setVelocity(Particles& p, std::size_t i, const Eigen::Vector3d& v) {
+    p.vx[i] = v.x();
+    p.vy[i] = v.y();
+    p.vz[i] = v.z();
+}
+
+void setWrappedPosition(Particles& p, std::size_t i, Eigen::Vector3d r, const Box& box) {
+    for (int a = 0; a < 3; ++a)
+        if (box.isActiveAxis(a)) r[a] = box.wrap(r[a], a);
+    p.rx[i] = r.x();
+    p.ry[i] = r.y();
+    p.rz[i] = r.z();
+}
+
+// The position mirrored across the plane (depth < 0 behind the wall), not wrapped.
+Eigen::Vector3d mirrored(const PlanarWall& w, const Particles& p, std::size_t i, double depth) {
+    return Eigen::Vector3d(p.rx[i], p.ry[i], p.rz[i]) - 2.0 * depth * w.normal;
+}
+
+// The speed, along the normal, of a particle a wall at temperature kT emits: flux-weighted
+// (Rayleigh) p(v) = v/kT exp(-v^2 / 2kT), drawn by inverting its distribution function.
+double emittedNormalSpeed(const PairRandom& random, std::uint64_t step, std::uint64_t id, double kT) {
+    const auto u = random.particleUniforms(step, id, kStreamReflection + 16);
+    return std::sqrt(kT) * std::sqrt(-2.0 * std::log(u[0]));
+}
+
 // New velocity, relative to the wall, for a particle returned by a Maxwellian (diffuse) wall: the
-// tangential components are Gaussian at the wall temperature, the normal one is drawn from the
-// flux-weighted (Rayleigh) distribution kT-scaled, which is what a wall at temperature kT emits.
+// tangential components are Gaussian at the wall temperature, the normal one is what the wall emits.
 Eigen::Vector3d diffuseVelocity(const PlanarWall& w, const Box& box, const PairRandom& random, std::uint64_t step,
                                 std::uint64_t id, double kT) {
     const auto g = random.particleGaussians(step, id, kStreamReflection);
-    const auto u = random.particleUniforms(step, id, kStreamReflection + 16);
     const double s = std::sqrt(kT);
     Eigen::Vector3d v(s * g[0], box.isActiveAxis(1) ? s * g[1] : 0.0, s * g[2]);
     v -= v.dot(w.normal) * w.normal;  // tangential part only
-    v += s * std::sqrt(-2.0 * std::log(u[0])) * w.normal;
-    return v;
+    return v + emittedNormalSpeed(random, step, id, kT) * w.normal;
 }
 
-void reflectOne(const PlanarWall& w, double depth, Particles& p, std::size_t i, const Box& box,
-                const PairRandom& random, std::uint64_t step, double kT) {
-    // Mirror the position across the plane (depth < 0 behind the wall).
-    p.rx[i] -= 2.0 * depth * w.normal.x();
-    p.ry[i] -= 2.0 * depth * w.normal.y();
-    p.rz[i] -= 2.0 * depth * w.normal.z();
-    for (int a = 0; a < 3; ++a) {
-        double& x = a == 0 ? p.rx[i] : (a == 1 ? p.ry[i] : p.rz[i]);
-        if (box.isActiveAxis(a)) x = box.wrap(x, a);
-    }
-    Eigen::Vector3d v(p.vx[i] - w.velocity.x(), p.vy[i] - w.velocity.y(), p.vz[i] - w.velocity.z());
+// Bounce layer (METHODS.md 3.2 step 6): the tangential velocity relative to the wall is reversed and
+// the normal one is replaced by a speed the wall emits at its temperature, pointing into the fluid.
+Eigen::Vector3d turnedRound(const PlanarWall& w, const Eigen::Vector3d& relative, const PairRandom& random,
+                            std::uint64_t step, std::uint64_t id, double kT) {
+    const Eigen::Vector3d tangential = relative - relative.dot(w.normal) * w.normal;
+    return -tangential + emittedNormalSpeed(random, step, id, kT) * w.normal;
+}
+
+// The rules that act at the plane, for a particle found `depth` (< 0) behind it.
+void reflectAtPlane(const PlanarWall& w, double depth, Particles& p, std::size_t i, const Box& box,
+                    const PairRandom& random, std::uint64_t step, double kT) {
+    setWrappedPosition(p, i, mirrored(w, p, i, depth), box);
+    Eigen::Vector3d v = velocityOf(p, i) - w.velocity;
     switch (w.rule) {
         case ReflectionRule::specular: v -= 2.0 * v.dot(w.normal) * w.normal; break;
         case ReflectionRule::bounceBack: v = -v; break;
         case ReflectionRule::maxwellian: v = diffuseVelocity(w, box, random, step, p.id[i], kT); break;
-        case ReflectionRule::none: break;
+        case ReflectionRule::bounceLayer: v = turnedRound(w, v, random, step, p.id[i], kT); break;
+        case ReflectionRule::none:
+        case ReflectionRule::bounceForward: break;  // bounceForward is finished after the step
     }
-    p.vx[i] = v.x() + w.velocity.x();
-    p.vy[i] = v.y() + w.velocity.y();
-    p.vz[i] = v.z() + w.velocity.z();
+    setVelocity(p, i, v + w.velocity);
+}
+
+struct RuleCounts {
+    long reflected = 0, crossed = 0;
+};
+
+// One bounce-layer wall: particles in the layer moving towards the solid are turned round; those
+// behind the plane are mirrored back, turned round and counted as crossings.
+RuleCounts applyBounceLayer(const PlanarWall& w, Particles& p, const std::vector<std::uint8_t>& frozen,
+                            const Box& box, const PairRandom& random, std::uint64_t step, double kT) {
+    const long n = static_cast<long>(p.size());
+    long reflected = 0, crossed = 0;
+#pragma omp parallel for reduction(+ : reflected, crossed) schedule(static)
+    for (long i = 0; i < n; ++i) {
+        if (frozen[p.species[i]]) continue;
+        const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
+        if (depth >= w.layer) continue;
+        if (depth < 0.0) {
+            ++crossed;
+        } else if ((velocityOf(p, i) - w.velocity).dot(w.normal) >= 0.0) {
+            continue;  // in the layer but already leaving it
+        } else {
+            const std::size_t k = static_cast<std::size_t>(i);
+            setVelocity(p, k, turnedRound(w, velocityOf(p, k) - w.velocity, random, step, p.id[k], kT) + w.velocity);
+            ++reflected;
+            continue;
+        }
+        reflectAtPlane(w, depth, p, static_cast<std::size_t>(i), box, random, step, kT);
+        ++reflected;
+    }
+    return {reflected, crossed};
+}
+
+// One wall whose rule acts at the plane; bounce-forward crossings are only recorded.
+RuleCounts applyAtPlane(const PlanarWall& w, std::uint32_t wallIndex, Particles& p,
+                        const std::vector<std::uint8_t>& frozen, const Box& box, const PairRandom& random,
+                        std::uint64_t step, double kT, std::vector<DeferredBounce>& deferred) {
+    const long n = static_cast<long>(p.size());
+    long crossed = 0;
+#pragma omp parallel for reduction(+ : crossed) schedule(static)
+    for (long i = 0; i < n; ++i) {
+        if (frozen[p.species[i]]) continue;
+        const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
+        if (depth >= 0.0) continue;
+        ++crossed;
+        const std::size_t k = static_cast<std::size_t>(i);
+        if (w.rule == ReflectionRule::bounceForward) {
+            const Eigen::Vector3d m = mirrored(w, p, k, depth);
+#pragma omp critical(dpdDeferredBounce)
+            deferred.push_back({p.id[k], wallIndex, m.x(), m.y(), m.z()});
+            continue;
+        }
+        reflectAtPlane(w, depth, p, k, box, random, step, kT);
+    }
+    return {crossed, crossed};
+}
+
+// The deferred crossing of a particle (the list is sorted by id), or nullptr.
+const DeferredBounce* findDeferred(const std::vector<DeferredBounce>& deferred, std::uint64_t id) {
+    const auto it = std::lower_bound(deferred.begin(), deferred.end(), id,
+                                     [](const DeferredBounce& d, std::uint64_t x) { return d.id < x; });
+    return it != deferred.end() && it->id == id ? &*it : nullptr;
 }
 
 }  // namespace
+
+void WallCounters::accumulate(const WallCounters& o) {
+    if (reflected.size() < o.reflected.size()) reflected.resize(o.reflected.size(), 0);
+    if (crossed.size() < o.crossed.size()) crossed.resize(o.crossed.size(), 0);
+    for (std::size_t w = 0; w < o.reflected.size(); ++w) reflected[w] += o.reflected[w];
+    for (std::size_t w = 0; w < o.crossed.size(); ++w) crossed[w] += o.crossed[w];
+    insideAfter += o.insideAfter;
+}
+
+bool WallSet::anyRule(ReflectionRule rule) const {
+    return std::any_of(walls_.begin(), walls_.end(), [&](const PlanarWall& w) { return w.rule == rule; });
+}
 
 std::string WallSet::thinWall(const Box& box, double depth) const {
     for (const auto& w : walls_) {
@@ -65,31 +167,71 @@ bool WallSet::isInsideSolid(double x, double y, double z) const {
     return false;
 }
 
-WallCounters WallSet::reflect(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies, const Box& box,
-                              const PairRandom& random, std::uint64_t step, double kT) const {
+int WallSet::owningWall(double x, double y, double z) const {
+    int best = -1;
+    double bestDepth = 0.0;
+    for (std::size_t k = 0; k < walls_.size(); ++k) {
+        const double d = walls_[k].signedDistance(x, y, z);
+        if (d < 0.0 && (best < 0 || d > bestDepth)) {
+            best = static_cast<int>(k);
+            bestDepth = d;
+        }
+    }
+    return best;
+}
+
+std::vector<long> WallSet::assignFrozenVelocities(Particles& p, const std::vector<std::uint8_t>& frozen) const {
+    std::vector<long> owned(walls_.size(), 0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!frozen[p.species[i]]) continue;
+        const int w = owningWall(p.rx[i], p.ry[i], p.rz[i]);
+        if (w < 0) continue;
+        setVelocity(p, i, walls_[w].velocity);
+        ++owned[w];
+    }
+    return owned;
+}
+
+WallCounters WallSet::reflect(Particles& p, const std::vector<std::uint8_t>& frozen, const Box& box,
+                              const PairRandom& random, std::uint64_t step, double kT,
+                              std::vector<DeferredBounce>& deferred) const {
     WallCounters counts;
     counts.reflected.assign(walls_.size(), 0);
-    const long n = static_cast<long>(p.size());
+    counts.crossed.assign(walls_.size(), 0);
+    deferred.clear();
     for (std::size_t k = 0; k < walls_.size(); ++k) {
         const PlanarWall& w = walls_[k];
+        RuleCounts c;
         if (w.rule == ReflectionRule::none) continue;
-        long reflected = 0;
-#pragma omp parallel for reduction(+ : reflected) schedule(static)
-        for (long i = 0; i < n; ++i) {
-            if (frozenOfSpecies[p.species[i]]) continue;
-            const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
-            if (depth >= 0.0) continue;
-            reflectOne(w, depth, p, static_cast<std::size_t>(i), box, random, step, kT);
-            ++reflected;
-        }
-        counts.reflected[k] = reflected;
+        if (w.rule == ReflectionRule::bounceLayer) c = applyBounceLayer(w, p, frozen, box, random, step, kT);
+        else c = applyAtPlane(w, static_cast<std::uint32_t>(k), p, frozen, box, random, step, kT, deferred);
+        counts.reflected[k] = c.reflected;
+        counts.crossed[k] = c.crossed;
     }
+    // Threads append in any order: sort so the list (and its binary search) is the same on any count.
+    std::sort(deferred.begin(), deferred.end(), [](const DeferredBounce& a, const DeferredBounce& b) { return a.id < b.id; });
+    const long n = static_cast<long>(p.size());
     long inside = 0;
 #pragma omp parallel for reduction(+ : inside) schedule(static)
     for (long i = 0; i < n; ++i)
-        if (!frozenOfSpecies[p.species[i]] && isInsideSolid(p.rx[i], p.ry[i], p.rz[i])) ++inside;
+        if (!frozen[p.species[i]] && isInsideSolid(p.rx[i], p.ry[i], p.rz[i]) && !findDeferred(deferred, p.id[i]))
+            ++inside;
     counts.insideAfter = inside;
     return counts;
+}
+
+void WallSet::completeBounceForward(Particles& p, const Box& box, const std::vector<DeferredBounce>& deferred) const {
+    if (deferred.empty()) return;
+    const long n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+        const DeferredBounce* it = findDeferred(deferred, p.id[i]);
+        if (!it) continue;
+        const std::size_t k = static_cast<std::size_t>(i);
+        const PlanarWall& w = walls_[it->wall];
+        setWrappedPosition(p, k, Eigen::Vector3d(it->x, it->y, it->z), box);
+        setVelocity(p, k, w.velocity - (velocityOf(p, k) - w.velocity));
+    }
 }
 
 }  // namespace dpd

@@ -223,7 +223,7 @@ TEST_F(FitSlipLengthToolTest, MissingDictionaryIsAnError) {
 
 TEST_F(FitSlipLengthToolTest, UnknownModeNamesFileLineAndKeyword) {
     write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);"));
-    writeDict("profile channelProfile;\nmode couette;\n");
+    writeDict("profile channelProfile;\nmode stokes;\n");
     writeTable(makeProfile(poiseuille, 0.01));
     const std::string msg = inputError();
     EXPECT_NE(msg.find("fitSlipLengthDict:3"), std::string::npos) << msg;
