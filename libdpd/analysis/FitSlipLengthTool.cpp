@@ -478,12 +478,7 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
     const Dictionary props = Dictionary::readFile((caseDir / "constant" / "dpdProperties").string());
     const FitSlipLengthSetup setup = readFitSlipLengthSetup(dict, props);
 
-    std::vector<TimeDirectory> times;
-    try {
-        times = selectTimes(o.caseDir, o.time, o.latestTime);
-    } catch (const std::runtime_error& e) {
-        throw IoError(e.what());
-    }
+    const std::vector<TimeDirectory> times = selectTimes(o.caseDir, o.time, o.latestTime);
     // Times named explicitly must have the table; in the default "every time" selection, times that
     // profileBins was not run on are passed over (but at least one must have it).
     const bool explicitSelection = o.latestTime || !o.time.empty();

@@ -264,12 +264,7 @@ std::vector<CompareFVMResult> runCompareFVM(const CompareFVMOptions& o, std::ost
         throw IoError((s.foamCase / s.foamTime / "U").string() + ": " + std::to_string(U.size()) + " cell values but " +
                       cPath.string() + " has " + std::to_string(centres.size()) + " cells");
 
-    std::vector<TimeDirectory> times;
-    try {
-        times = selectTimes(o.caseDir, o.time, o.latestTime);
-    } catch (const std::runtime_error& e) {
-        throw IoError(e.what());
-    }
+    const std::vector<TimeDirectory> times = selectTimes(o.caseDir, o.time, o.latestTime);
     const bool explicitSelection = o.latestTime || !o.time.empty();
     std::vector<CompareFVMResult> results;
     for (const TimeDirectory& t : times) {

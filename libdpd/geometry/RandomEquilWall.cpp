@@ -4,6 +4,7 @@
 #include "geometry/Percolation.hpp"
 #include "integrators/Integrator.hpp"
 #include "io/Dictionary.hpp"
+#include "run/BoxDictionary.hpp"
 #include "run/DpdProperties.hpp"
 #include "run/InitialConditions.hpp"
 #include "run/Monitors.hpp"
@@ -14,20 +15,6 @@
 namespace dpd {
 
 namespace {
-
-Box readBox(const Dictionary& d, int dimension, double cutoff) {
-    const Dictionary& bd = d.subDict("box");
-    bd.checkKeys({"min", "max"});
-    Box box;
-    box.dimension = dimension;
-    box.lo = bd.get<Eigen::Vector3d>("min");
-    box.hi = bd.get<Eigen::Vector3d>("max");
-    if (dimension == 2) box.lo.y() = -0.5, box.hi.y() = 0.5;  // the y axis is inactive in 2-D
-    for (int a = 0; a < 3; ++a)
-        if (box.isActiveAxis(a) && !(box.hi[a] - box.lo[a] >= 3.0 * cutoff))
-            bd.fail("max", std::string("the box must be at least three cutoffs long along ") + "xyz"[a]);
-    return box;
-}
 
 int speciesOf(const Dictionary& parent, const std::string& key, const DpdModel& model, bool frozen) {
     const Dictionary& d = parent.subDict(key);
@@ -130,7 +117,7 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
                                        "or geometry { type gmsh; ... } block");
     const Dictionary& geometryDict = dpdProperties.subDict("geometry");
     Snapshot snap;
-    snap.box = readBox(dict, model.dimension, model.cutoff);
+    snap.box = readBoxDictionary(dict, model.dimension, model.cutoff);
     snap.speciesNames = model.species.names();
     for (int s = 0; s < model.species.size(); ++s) snap.speciesFrozen.push_back(model.species[s].frozen);
     const int fluidSpecies = speciesOf(dict, "fluid", model, false);

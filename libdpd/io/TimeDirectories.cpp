@@ -1,5 +1,7 @@
 #include "io/TimeDirectories.hpp"
 
+#include "core/Error.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -39,7 +41,7 @@ std::vector<std::string> splitCommas(const std::string& s) {
 
 std::vector<TimeDirectory> listTimes(const std::string& caseDir) {
     std::vector<TimeDirectory> out;
-    if (!fs::is_directory(caseDir)) throw std::runtime_error("case directory '" + caseDir + "' does not exist");
+    if (!fs::is_directory(caseDir)) throw IoError("case directory '" + caseDir + "' does not exist");
     for (const auto& entry : fs::directory_iterator(caseDir)) {
         if (!entry.is_directory()) continue;
         const std::string name = entry.path().filename().string();
@@ -59,18 +61,18 @@ std::vector<TimeDirectory> selectTimes(const std::string& caseDir, const std::st
     } else if (!timeOption.empty()) {
         for (const std::string& want : splitCommas(timeOption)) {
             double value;
-            if (!parseNumber(want, value)) throw std::runtime_error("-time '" + want + "' is not a number");
+            if (!parseNumber(want, value)) throw IoError("-time '" + want + "' is not a number");
             const auto it = std::find_if(all.begin(), all.end(), [&](const TimeDirectory& t) {
                 return std::abs(t.value - value) <= 1e-9 * std::max(1.0, std::abs(value));
             });
-            if (it == all.end()) throw std::runtime_error("case '" + caseDir + "' has no time directory " + want);
+            if (it == all.end()) throw IoError("case '" + caseDir + "' has no time directory " + want);
             chosen.push_back(*it);
         }
     } else {
         for (const auto& t : all)
             if (includeZero || t.value != 0.0) chosen.push_back(t);
     }
-    if (chosen.empty()) throw std::runtime_error("case '" + caseDir + "' has no time directory to process");
+    if (chosen.empty()) throw IoError("case '" + caseDir + "' has no time directory to process");
     return chosen;
 }
 

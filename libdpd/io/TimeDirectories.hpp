@@ -15,7 +15,7 @@ std::string timeName(double t);
 // Every directory of the case whose name is a number, in increasing time.
 std::vector<TimeDirectory> listTimes(const std::string& caseDir);
 // Time selection of the post-processing tools: -time T (a name, a value, or a comma list),
-// -latestTime, or (neither) every time but 0. Throws std::runtime_error naming the case when the
+// -latestTime, or (neither) every time but 0. Throws IoError naming the case when the
 // selection finds nothing.
 std::vector<TimeDirectory> selectTimes(const std::string& caseDir, const std::string& timeOption, bool latestTime,
                                        bool includeZero = false);

@@ -1,6 +1,7 @@
 #include "walls/BlockFrozenWall.hpp"
 
 #include "io/Dictionary.hpp"
+#include "run/BoxDictionary.hpp"
 #include "run/DpdProperties.hpp"
 #include "run/InitialConditions.hpp"
 #include "run/InitialFlow.hpp"
@@ -11,22 +12,6 @@
 namespace dpd {
 
 namespace {
-
-Box readBox(const Dictionary& d, int dimension, double cutoff) {
-    const Dictionary& bd = d.subDict("box");
-    bd.checkKeys({"min", "max"});
-    Box box;
-    box.dimension = dimension;
-    box.lo = bd.get<Eigen::Vector3d>("min");
-    box.hi = bd.get<Eigen::Vector3d>("max");
-    if (dimension == 2) { box.lo.y() = -0.5; box.hi.y() = 0.5; }  // nominal: the y axis is inactive
-    for (int a = 0; a < 3; ++a) {
-        if (!box.isActiveAxis(a)) continue;
-        if (box.hi[a] - box.lo[a] < 3.0 * cutoff)
-            bd.fail("max", std::string("the box must be at least three cutoffs long along ") + "xyz"[a]);
-    }
-    return box;
-}
 
 int speciesIndex(const Dictionary& d, const DpdModel& model, bool wantFrozen) {
     const std::string name = d.get<std::string>("species");
@@ -57,7 +42,7 @@ FrozenLatticeSettings readLattice(const Dictionary& wd, const DpdModel& model) {
 Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockFrozenWallReport& report) {
     d.checkKeys({"box", "fluid", "wall"});
     Snapshot snap;
-    snap.box = readBox(d, model.dimension, model.cutoff);
+    snap.box = readBoxDictionary(d, model.dimension, model.cutoff);
     for (int s = 0; s < model.species.size(); ++s) {
         snap.speciesNames.push_back(model.species[s].name);
         snap.speciesFrozen.push_back(model.species[s].frozen);

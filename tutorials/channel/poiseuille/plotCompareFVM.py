@@ -1,20 +1,18 @@
 #!/usr/bin/env python3
-"""poiseuilleFVM: picture, results table and checks of the DPD channel against its simpleFoam twins.
+"""Poiseuille tutorial, continuum side: picture, table and checks of the DPD channel against its
+simpleFoam twin (makeFoamCase: nu measured without walls in viscosity/, no slip).
 
 Checks (non-zero exit status when one fails):
- 1. simpleFoam (no-slip twin) reproduces the analytic parabola u = g (z - z_lo)(z_hi - z) / (2 nu) to
+ 1. simpleFoam reproduces the analytic parabola u = g (z - z_lo)(z_hi - z) / (2 nu) to
     solver precision. On a uniform mesh the finite-volume solution of this problem is exactly the
     parabola shifted by g h^2 / (8 nu) at the cell centres (the half-cell wall gradient (U_P - 0)/(h/2)
     is the one inexact term; the wall flux is fixed at g d / 2 by the force balance, so the shift is
     the same in every cell), so the cell values must equal analytic + g h^2 / (8 nu) to the solver's
     tolerance (residualControl 1e-12: 1e-8 of the centre velocity is ample).
- 2. The DPD profile against the twin with the measured nu and slip lengths (compareFVM, field L2):
-    full run: L2 < 3 %.
-    -test: the short run's profile is noisy, so L2 is held to the noise: when the continuum is the
-    truth, E[L2^2] = noiseL2^2 (noiseL2 = sqrt(sum err^2 / sum u^2), the bins' standard errors), less the
-    3 parameters the fit took from the same bins; L2^2 / noiseL2^2 scatters like chi^2/N with
-    relative standard deviation sqrt(2 / N). The bound noiseL2 * sqrt(1 + 4 sqrt(2 / N)) is 4 standard
-    deviations above that, plus the discretisation (h/d)^2 of the continuum.
+ 2. The DPD profile against the twin (compareFVM, relative L2 over the bins inside the fluid) < 3 %,
+    in both modes. Nothing in the twin is fitted to the channel: its nu comes from the periodic box
+    without walls, its walls do not slip. In the test (d = 10, g = 0.08) the profile's own noise
+    is ~0.5 % (noiseL2), so the bound is decisive there too.
 """
 import math
 import os
@@ -66,21 +64,20 @@ def read_vector_field(path):
 
 
 def main():
-    test = "-test" in sys.argv[1:]
     t = latest("postProcessing/compareFVM")
     cmp = read_dictionary(f"postProcessing/compareFVM/{t}/compare.dat")
     prof = np.loadtxt(f"postProcessing/compareFVM/{t}/profiles.dat")
     fit = read_dictionary(f"postProcessing/fitSlipLength/{latest('postProcessing/fitSlipLength')}/fit.dat")
-    rec = read_dictionary("simpleFoamNoSlip/constant/dpdCase")
+    rec = read_dictionary("simpleFoam/constant/dpdCase")
     z_lo, z_hi = rec["meshMin"][2], rec["meshMax"][2]
     d = z_hi - z_lo
     g, nu = rec["g"][0], rec["nu"]
     h = d / rec["cells"][2]
 
-    # 1. simpleFoam against the analytic parabola (no-slip twin).
-    ft = latest("simpleFoamNoSlip")
-    C = read_vector_field(f"simpleFoamNoSlip/{ft}/C")
-    U = read_vector_field(f"simpleFoamNoSlip/{ft}/U")
+    # 1. simpleFoam against the analytic parabola.
+    ft = latest("simpleFoam")
+    C = read_vector_field(f"simpleFoam/{ft}/C")
+    U = read_vector_field(f"simpleFoam/{ft}/U")
     z = C[:, 2]
     analytic = g * (z - z_lo) * (z_hi - z) / (2 * nu)
     u_max = g * d * d / (8 * nu)
@@ -88,46 +85,34 @@ def main():
     solver_error = np.max(np.abs(U[:, 0] - (analytic + shift))) / u_max
     discretisation = np.max(np.abs(U[:, 0] - analytic)) / u_max
 
-    # The plain continuum prediction (no slip) at the DPD bins, reported: the slip the DPD walls show.
+    # 2. DPD against the twin.
     zb, ud, ue, uf = prof[:, 0], prof[:, 1], prof[:, 2], prof[:, 3]
-    inside = np.isfinite(uf)
-    order = np.argsort(z)
-    u_noslip = np.interp(zb[inside], z[order], U[order, 0])
-    L2_noslip = math.sqrt(np.sum((ud[inside] - u_noslip) ** 2) / np.sum(u_noslip ** 2))
-
-    # 2. DPD against the twin with the measured nu and slip.
     L2, noise = cmp["L2"], cmp["noiseL2"]
     n = int(cmp["points"])
-    if test:
-        tolerance = noise * math.sqrt(1 + 4 * math.sqrt(2 / n)) + (h / d) ** 2
-        dpd_check = (f"DPD vs simpleFoam (measured nu, slip): L2 <= {tolerance:.4f} (4 sigma of the DPD noise)",
-                     L2 <= tolerance, f"L2 = {L2:.4f}, noise L2 = {noise:.4f}, {n} bins")
-    else:
-        dpd_check = ("DPD vs simpleFoam (measured nu, slip): L2 < 3 %", L2 < 0.03, f"L2 = {L2:.4f}")
+    dpd_check = ("DPD vs simpleFoam (nu without walls, no slip): L2 < 3 %", L2 < 0.03,
+                 f"L2 = {L2:.4f}, noise L2 = {noise:.4f}, {n} bins")
     checks = [
         ("simpleFoam = analytic + g h^2/(8 nu) to solver precision (< 1e-8 of u_max)", solver_error < 1e-8,
          f"{solver_error:.2e}"),
         dpd_check,
     ]
 
-    with open("results.dat", "w") as f:
-        f.write(f"# poiseuilleFVM at DPD time {t}, simpleFoam time {ft} (no slip)\n")
-        f.write(f"nu                {nu:.5f} +- {fit.get('nuError', 0.0):.5f}  (fitSlipLength)\n")
-        f.write(f"slipLength        {fit['slipLength'][0]:+.4f} {fit['slipLength'][1]:+.4f}\n")
+    with open("resultsFVM.dat", "w") as f:
+        f.write(f"# DPD channel at time {t} against simpleFoam (time {ft}): nu without walls, no slip\n")
+        f.write(f"nu                {nu:.5f}  (viscosity/, no walls)\n")
+        f.write(f"slipLength        {fit['slipLength'][0]:+.4f} {fit['slipLength'][1]:+.4f}  (fitSlipLength, for reference)\n")
         f.write(f"simpleFoamSolver  {solver_error:.3e}  (max |U - analytic - g h^2/8nu| / u_max)\n")
         f.write(f"discretisation    {discretisation:.3e}  (max |U - analytic| / u_max; (h/d)^2 = {(h / d) ** 2:.3e})\n")
         f.write(f"L2                {L2:.5f}\nLinf              {cmp['Linf']:.5f}\nnoiseL2           {noise:.5f}\n")
         f.write(f"meanVelocityRatio {cmp['meanVelocityRatio']:.5f}\n")
-        f.write(f"L2NoSlip          {L2_noslip:.5f}  (DPD against the no-slip twin; reported)\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
-    print(open("results.dat").read(), end="")
+    print(open("resultsFVM.dat").read(), end="")
 
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     zz = np.linspace(z_lo, z_hi, 200)
     ax[0].errorbar(zb, ud, yerr=ue, fmt="o", ms=3, label="DPD (profileBins)")
-    ax[0].plot(zb, uf, "r-", lw=1.5, label=f"simpleFoam, nu = {nu:.3f}, fitted slip")
-    ax[0].plot(z, U[:, 0], "g--", lw=1, label="simpleFoam, no slip")
+    ax[0].plot(z, U[:, 0], "r-", lw=1.5, label=f"simpleFoam, nu = {nu:.4f} (no walls), no slip")
     ax[0].plot(zz, g * (zz - z_lo) * (z_hi - zz) / (2 * nu), "k:", lw=1, label="analytic, no slip")
     ax[0].set_xlabel("z")
     ax[0].set_ylabel("u_x")
@@ -139,7 +124,8 @@ def main():
     ax[1].set_ylabel("u_DPD - u_simpleFoam")
     ax[1].set_title(f"L2 = {L2:.4f} (noise {noise:.4f}), Linf = {cmp['Linf']:.4f}")
     fig.tight_layout()
-    fig.savefig("poiseuilleFVM.png", dpi=120)
+    fig.savefig("compareFVM.png", dpi=120)
+    print("Written compareFVM.png and resultsFVM.dat")
     return 0 if all(ok for _, ok, _ in checks) else 1
 
 
