@@ -113,6 +113,14 @@ expectError $? log.bad6 "no keyword 'shearRate'" "fit.dat"
 runSweep -case base -dir bad -entry system/controlDict endTime -values 6 -collect nu -- false > log.bad7 2>&1
 expectError $? log.bad7 "the command failed in bad/base_endTime6"
 
+# 6. The case itself as the base (-case .), the copies inside it: named after the case's directory,
+# and the copies' directory not copied into them.
+( cd base && runSweep -case . -dir runs/nested -entry system/controlDict endTime -values 400 500 -collect nu \
+      -- fakeRun ) > log.inside 2>&1 || fail "sweep 6 failed: $(cat log.inside)"
+[ "$(tail -n 1 base/runs/nested/sweep.dat 2>/dev/null)" = "base_endTime500 500 0.5" ] ||
+    fail "sweep 6 table: $(cat base/runs/nested/sweep.dat 2>/dev/null)"
+[ -e base/runs/nested/base_endTime500/runs ] && fail "the copies' directory was copied into a copy"
+
 if [ $failures -ne 0 ]; then
     echo "$failures failure(s)"
     exit 1
