@@ -115,11 +115,11 @@ expectError $? log.bad7 "the command failed in bad/base_endTime6"
 
 # 6. The case itself as the base (-case .), the copies inside it: named after the case's directory,
 # and the copies' directory not copied into them.
-( cd base && runSweep -case . -dir runs/nested -entry system/controlDict endTime -values 400 500 -collect nu \
+( cd base && runSweep -case . -dir copies/nested -entry system/controlDict endTime -values 400 500 -collect nu \
       -- fakeRun ) > log.inside 2>&1 || fail "sweep 6 failed: $(cat log.inside)"
-[ "$(tail -n 1 base/runs/nested/sweep.dat 2>/dev/null)" = "base_endTime500 500 0.5" ] ||
-    fail "sweep 6 table: $(cat base/runs/nested/sweep.dat 2>/dev/null)"
-[ -e base/runs/nested/base_endTime500/runs ] && fail "the copies' directory was copied into a copy"
+[ "$(tail -n 1 base/copies/nested/sweep.dat 2>/dev/null)" = "base_endTime500 500 0.5" ] ||
+    fail "sweep 6 table: $(cat base/copies/nested/sweep.dat 2>/dev/null)"
+[ -e base/copies/nested/base_endTime500/copies ] && fail "the copies' directory was copied into a copy"
 
 if [ $failures -ne 0 ]; then
     echo "$failures failure(s)"
