@@ -13,19 +13,7 @@ DPD_PROJECT_DIR="$src"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
-failures=0
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expectError <status> <log> <pattern>...: the command failed and its output matched every pattern.
-expectError() {
-    local status=$1 log=$2
-    shift 2
-    if [ "$status" -eq 0 ]; then fail "expected a non-zero exit status ($(head -c 300 "$log"))"; return; fi
-    for pattern in "$@"; do
-        grep -q -- "$pattern" "$log" || fail "message lacks '$pattern': $(cat "$log")"
-    done
-}
+. "$src/tests/shellTestFunctions" || exit 1
 
 header='FoamFile { version 2.0; format ascii; class dictionary; }'
 mkdir -p base/system base/constant base/0 base/250 base/postProcessing/fitSlipLength/250
@@ -121,8 +109,4 @@ expectError $? log.bad7 "the command failed in bad/base_endTime6"
     fail "sweep 6 table: $(cat base/copies/nested/sweep.dat 2>/dev/null)"
 [ -e base/copies/nested/base_endTime500/copies ] && fail "the copies' directory was copied into a copy"
 
-if [ $failures -ne 0 ]; then
-    echo "$failures failure(s)"
-    exit 1
-fi
-echo "runSweep: all checks passed"
+finishTests runSweep

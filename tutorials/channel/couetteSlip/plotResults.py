@@ -7,7 +7,6 @@ temperature and shear stress across the channel for every a_ww (couetteSlip.png)
 the walls for every a_wf (couetteSlip_nearWall.png), writes results.dat, and exits non-zero when a
 check fails.
 """
-import glob
 import math
 import os
 import re
@@ -19,34 +18,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
+from dpdResults import latest, read_sweep, read_table  # noqa: E402
+
 # The viscosity of this fluid without walls (rho 4, a 18.75, gamma 4.5, GrootWarren 0.65, dt 0.02):
 # periodic reverse Poiseuille, tutorials/channel/poiseuille/viscosity (1000 time units, 60 x 3 x 40).
 NU_NO_WALLS, NU_NO_WALLS_ERR = 0.2716, 0.0004
-
-
-def latest(pattern):
-    paths = glob.glob(pattern)
-    if not paths:
-        sys.exit(f"plotResults: nothing matches {pattern}")
-    return max(paths, key=lambda p: float(os.path.basename(os.path.dirname(p))))
-
-
-def read_table(path):
-    with open(path) as f:
-        header = f.readline().lstrip("#").split()
-    data = np.loadtxt(path, comments="#", ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(header)}
-
-
-def read_sweep(path):
-    """runSweep's table: the first column names the run, the rest are numbers."""
-    with open(path) as f:
-        header = f.readline().lstrip("#").split()
-        rows = [line.split() for line in f if line.strip()]
-    out = {"case": [r[0] for r in rows]}
-    for k, name in enumerate(header[1:], start=1):
-        out[name] = np.array([float(r[k]) for r in rows])
-    return out
 
 
 def entry(text, pattern, default=None):
