@@ -49,15 +49,14 @@ def monotonic_checks(label, gammas, b, err):
     return out
 
 
-def wall_gap(prof, z_low, z_high):
-    """The width of the depleted layer: the mean over the two walls of the distance from the wall
-    to the first bin whose density reaches half the central density."""
+def wall_gap(prof, z_low, z_high, cutoff=1.0):
+    """The depletion at the walls: the fluid missing within one cutoff of a wall, as a width,
+    integral of max(0, 1 - rho / rho_centre) dz over the bins there, mean of the two walls."""
     z, rho = prof["z"], prof["density"]
     centre = np.abs(z - 0.5 * (z_low + z_high)) < 0.25 * (z_high - z_low)
-    half = 0.5 * np.mean(rho[centre])
-    lower = z[np.argmax(rho >= half)] - z_low
-    upper = z_high - z[len(z) - 1 - np.argmax(rho[::-1] >= half)]
-    return 0.5 * (lower + upper)
+    missing = np.clip(1.0 - rho / np.mean(rho[centre]), 0.0, None) * (z[1] - z[0])
+    near = np.minimum(z - z_low, z_high - z) < cutoff
+    return 0.5 * np.sum(missing[near])
 
 
 def main():
@@ -71,17 +70,16 @@ def main():
     z_low, z_high = walls("constant/dpdProperties")
 
     checks = monotonic_checks("2-D", g2, b2, e2) + monotonic_checks("3-D", g3, b3, e3)
-    # The variants leave a gap at the wall: the layer where the density is below half the central
-    # one is wider than at the standard wall (same gamma_fw, 4.5) by at least one bin.
+    # The variants leave a gap at the wall: more fluid missing next to it than at the standard wall
+    # (same gamma_fw, 4.5). A bin's density is known to ~1 %, so the depletion to ~0.005: a
+    # difference of 0.1 (a tenth of a cutoff of fluid) is decisive.
     k45 = int(np.argmin(np.abs(g2 - 4.5)))
     gap_std = wall_gap(profile("sweep2D", s2["case"][k45]), z_low, z_high)
-    z_bins = profile("sweep2D", s2["case"][k45])["z"]
-    bin_width = z_bins[1] - z_bins[0]
     gaps = [wall_gap(profile("variants", c), z_low, z_high) for c in sv["case"]]
     names = ["a_wf = 3 a", "wall 3 x denser"]
     for name, gap in zip(names, gaps):
-        checks.append((f"{name}: a wider gap at the wall than the standard wall's", gap >= gap_std + bin_width,
-                       f"{gap:.3f} against {gap_std:.3f} (bins {bin_width:.3f})"))
+        checks.append((f"{name}: a wider gap at the wall than the standard wall's (depletion + 0.1)",
+                       gap > gap_std + 0.1, f"{gap:.3f} against {gap_std:.3f}"))
 
     with open("results.dat", "w") as f:
         f.write(f"# Slip by gamma_fw, Poiseuille between frozen walls, d = {z_high - z_low:g}: slip length\n"
@@ -92,8 +90,8 @@ def main():
                         f"  mean {b[k]:+.4f} +- {e[k]:.4f}  nu {s['nu'][k]:.4f} +- {s['nuError'][k]:.4f}\n")
         for name, k in zip(names, range(len(sv["case"]))):
             f.write(f"2-D {name} (gamma_fw 4.5): b {sv['slipLength_0'][k]:+.4f} {sv['slipLength_1'][k]:+.4f}"
-                    f"  nu {sv['nu'][k]:.4f} +- {sv['nuError'][k]:.4f}  gap at the wall {gaps[k]:.3f}\n")
-        f.write(f"2-D standard wall (gamma_fw 4.5): gap at the wall {gap_std:.3f}\n")
+                    f"  nu {sv['nu'][k]:.4f} +- {sv['nuError'][k]:.4f}  depletion at the wall {gaps[k]:.3f}\n")
+        f.write(f"2-D standard wall (gamma_fw 4.5): depletion at the wall {gap_std:.3f}\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
     print(open("results.dat").read(), end="")
