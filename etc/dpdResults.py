@@ -1,0 +1,42 @@
+"""Reading what the tools write, for the tutorials' plotResults.py scripts.
+
+    import sys, os; sys.path.insert(0, os.path.join(os.environ["DPD_PROJECT_DIR"], "etc"))
+    from dpdResults import latest, read_sweep, read_table
+"""
+import glob
+import os
+import sys
+
+import numpy as np
+
+
+def latest(pattern):
+    """The path matching pattern (.../<time>/<file>) whose time directory is the latest."""
+    paths = glob.glob(pattern)
+    if not paths:
+        sys.exit(f"plotResults: nothing matches {pattern}")
+    return max(paths, key=lambda p: float(os.path.basename(os.path.dirname(p))))
+
+
+def read_table(path):
+    """A whitespace table with a '# name name ...' header (profileBins): {name: column}."""
+    with open(path) as f:
+        header = f.readline().lstrip("#").split()
+    data = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def read_sweep(path):
+    """runSweep's table: {column: values}; numbers as arrays, other columns (the run's name, a
+    vector value written as (1,0,0)) as lists of words."""
+    with open(path) as f:
+        header = f.readline().lstrip("#").split()
+        rows = [line.split() for line in f if line.strip()]
+    out = {}
+    for k, name in enumerate(header):
+        words = [r[k] for r in rows]
+        try:
+            out[name] = np.array([float(w) for w in words])
+        except ValueError:
+            out[name] = words
+    return out
