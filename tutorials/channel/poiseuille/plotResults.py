@@ -5,7 +5,6 @@ Reads the channel's profile and fit (postProcessing/...) and the viscosity measu
 (viscosity/postProcessing/...), draws velocity, density and temperature across the channel with the
 analytic profile, writes results.dat, and exits non-zero when a check fails.
 """
-import glob
 import math
 import os
 import re
@@ -17,20 +16,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def latest(pattern):
-    """The path matching pattern whose time directory is the latest."""
-    paths = glob.glob(pattern)
-    if not paths:
-        sys.exit(f"plotResults: nothing matches {pattern}")
-    return max(paths, key=lambda p: float(os.path.basename(os.path.dirname(p))))
-
-
-def read_table(path):
-    with open(path) as f:
-        header = f.readline().lstrip("#").split()
-    data = np.loadtxt(path, comments="#")
-    return {name: data[:, k] for k, name in enumerate(header)}
+sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
+from dpdResults import latest, read_table  # noqa: E402
 
 
 def read_dict(path):
