@@ -14,7 +14,6 @@ Checks (non-zero exit status when one fails):
     without walls, its walls do not slip. In the test (d = 10, g = 0.08) the profile's own noise
     is ~0.5 % (noiseL2), so the bound is decisive there too.
 """
-import math
 import os
 import re
 import sys
