@@ -141,14 +141,14 @@ std::vector<SpeedAccuracyRow> runSpeedAccuracyStudy(const SpeedAccuracySettings&
             row.dt = dt;
             row.result = probeTemperature(sys, *integrator, s.probe);
             row.secondsPerParticleTimeUnit =
-                row.result.seconds / (static_cast<double>(sys.particles.size()) * s.probe.productionTime);
+                row.result.cpuSeconds / (static_cast<double>(sys.particles.size()) * s.probe.productionTime);
             progress << std::setw(12) << c.label << "  dt " << std::setw(6) << dt << "  ";
             if (row.result.unstable)
                 progress << "unstable after " << row.result.unstableAfter << " time units: " << row.result.problem << "\n";
             else
                 progress << "kT error " << std::showpos << std::setprecision(3) << 100.0 * (row.result.kT / s.fluid.kT - 1.0)
                          << std::noshowpos << " % +- " << 100.0 * row.result.standardError / s.fluid.kT << " %, "
-                         << row.secondsPerParticleTimeUnit << " s per particle per time unit, P " << row.result.pressure
+                         << row.secondsPerParticleTimeUnit << " CPU s per particle per time unit, P " << row.result.pressure
                          << " +- " << row.result.pressureStandardError << "\n";
             if (s.viscosity && !row.result.unstable) {
                 System flow = flowFluid;
@@ -206,7 +206,9 @@ std::string speedAccuracyTable(const std::vector<SpeedAccuracyRow>& rows, const 
        << "# with its block standard error; nu: kinematic viscosity from reverse-Poiseuille flow and its fit error\n"
        << "# (nan: not measured). pressureError, nuError: relative to the reference, " << s.reference << " at dt "
        << (reference ? reference->dt : std::nan("")) << ", their SE both errors in quadrature (the reference's own\n"
-       << "# relative error on its row). unstable: 1 when the run's monitor stopped it after unstableAfter time units.\n";
+       << "# relative error on its row). secondsPerParticleTimeUnit: CPU seconds of the process (all threads) per\n"
+       << "# particle per time unit simulated, steps only. unstable: 1 when the run's monitor stopped it after\n"
+       << "# unstableAfter time units.\n";
     os << std::setprecision(6);
     for (const SpeedAccuracyRow& r : rows) {
         const bool bad = r.result.unstable;

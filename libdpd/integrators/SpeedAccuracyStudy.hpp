@@ -1,7 +1,8 @@
 #pragma once
 // Speed against accuracy of the integrators: for each integrator and time step, on the standard fluid,
 // the kT error and the pressure (with their block standard errors), whether the run's monitor stopped
-// it, and the cost of one time unit (seconds per particle per time unit); optionally the viscosity
+// it, and the cost of one time unit (CPU seconds per particle per time unit: the work, robust to
+// other jobs on the machine); optionally the viscosity
 // from a reverse-Poiseuille run of the same integrator and step (integrators/ViscosityProbe). Pressure
 // and viscosity errors are taken against a reference: the smallest step of the integrator named by
 // `reference`. Read from system/integratorSpeedAccuracyDict:
@@ -53,7 +54,7 @@ struct SpeedAccuracyRow {
     std::string label;
     double dt = 0.0;
     TemperatureProbeResult result;
-    double secondsPerParticleTimeUnit = 0.0;  // production wall time / (particles x production time)
+    double secondsPerParticleTimeUnit = 0.0;  // production CPU time (all threads) / (particles x production time)
     bool hasViscosity = false;
     ViscosityProbeResult viscosity;
 };

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <vector>
 
 namespace dpd {
@@ -35,6 +36,12 @@ void blockEstimate(const std::vector<double>& series, const TemperatureProbeSett
     error = standardErrorOfMean(means) / s.blockEfficiency;
 }
 
+double processCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 }  // namespace
 
 TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, const TemperatureProbeSettings& s,
@@ -46,13 +53,15 @@ TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, con
     const double setKT = sys.forceParameters.kT;
     TemperatureProbeResult r;
     std::vector<double> samples, pressures;
-    double stepSeconds = 0.0;
+    double stepSeconds = 0.0, stepCpuSeconds = 0.0;
     for (std::int64_t k = 1; k <= equilibration + production; ++k) {
         const auto t0 = std::chrono::steady_clock::now();
+        const double c0 = processCpuSeconds();
         integrator.step(sys);
+        stepCpuSeconds += processCpuSeconds() - c0;
         stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ++r.steps;
-        if (k == equilibration) stepSeconds = 0.0;  // time the production only
+        if (k == equilibration) stepSeconds = stepCpuSeconds = 0.0;  // time the production only
         const bool sample = k > equilibration && (k - equilibration) % sampleEvery == 0;
         if (!sample && k % s.checkEvery != 0) continue;
         const MonitorReport m = monitor(sys, s.flowAxis);
@@ -68,6 +77,7 @@ TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, con
         if (onSample) onSample(sys);
     }
     r.seconds = stepSeconds;
+    r.cpuSeconds = stepCpuSeconds;
     blockEstimate(samples, s, r.kT, r.standardError);
     if (s.samplePressure) blockEstimate(pressures, s, r.pressure, r.pressureStandardError);
     return r;

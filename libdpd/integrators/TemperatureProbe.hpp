@@ -34,6 +34,9 @@ struct TemperatureProbeResult {
     std::string problem;
     std::int64_t steps = 0;      // steps made
     double seconds = 0.0;        // wall time of the production (steps only, no sampling)
+    // CPU time of the process (all threads) over the same steps: the work done, which unlike the wall
+    // time does not grow when other jobs share the machine's cores.
+    double cpuSeconds = 0.0;
     double pressure = 0.0;       // mean pressure (samplePressure only)
     double pressureStandardError = 0.0;  // block standard error / blockEfficiency
 };
