@@ -5,10 +5,12 @@
 // twice the fluid's viscosity, ~0.29) must agree within 4 combined standard errors. Each equilibrates
 // for 30 time units, 3.4 times the relaxation time tau = (Lz/2)^2 / (pi^2 nu) = 8.7 of the start's
 // error, leaving 3 % of it. Resolution: the fit errors are ~0.02-0.03 each (measured: 0.028 and 0.017,
-// nu 0.31 and 0.25), so 4 combined SE is ~0.13, 45 % of nu; the two starts' profiles differ by 145 % of
-// the signal at first (0.29 / 0.15 - 0.29 / 0.6), so a probe that sampled from the start (or ignored
-// the equilibration) would differ by more than that in the first time units. This is a coarse check
-// of the plumbing (force, start, bins, fit) at test cost, not a precision measurement of nu.
+// nu 0.31 and 0.25), so 4 combined SE is ~0.13, 45 % of nu. The two starts' profiles differ by 145 % of
+// the signal at first (0.29 / 0.15 - 0.29 / 0.6); sampled with no equilibration for 10 time units they
+// gave nu 0.20 +- 0.01 and 0.37 +- 0.10 (the drifting profile inflates the fit's error through its
+// chi^2), which this tolerance does not resolve either. So this is a coarse check of the plumbing
+// (force direction, start, bins, fit, error bars) at test cost, not a test of the relaxation or a
+// precision value of nu.
 // Both fits must be parabolic within the block errors (chi^2 per degree of freedom < 3: with ~10
 // degrees of freedom per half a value above 2.5 has a probability below 1 %) and give a positive nu
 // within a factor of two of the kinetic-theory estimate (0.32), which rules out sign and unit slips.
