@@ -1,6 +1,7 @@
 #include "integrators/TemperatureProbe.hpp"
 
 #include "integrators/Integrator.hpp"
+#include "integrators/Pressure.hpp"
 #include "run/Monitors.hpp"
 #include "run/System.hpp"
 #include "sampling/BlockStatistics.hpp"
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <vector>
 
 namespace dpd {
@@ -25,39 +27,59 @@ std::vector<double> blockMeans(const std::vector<double>& series, int blocks) {
     return means;
 }
 
+// Mean and standard error (divided by the block efficiency) of a sampled series from its block means.
+void blockEstimate(const std::vector<double>& series, const TemperatureProbeSettings& s, double& mean, double& error) {
+    const std::vector<double> means = blockMeans(series, s.blocks);
+    mean = 0.0;
+    for (double m : means) mean += m;
+    mean /= static_cast<double>(s.blocks);
+    error = standardErrorOfMean(means) / s.blockEfficiency;
+}
+
+double processCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 }  // namespace
 
-TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, const TemperatureProbeSettings& s) {
+TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, const TemperatureProbeSettings& s,
+                                        const std::function<void(const System&)>& onSample) {
     const double dt = sys.dt();
     const std::int64_t equilibration = std::llround(s.equilibrationTime / dt);
     const std::int64_t production = std::llround(s.productionTime / dt);
     const std::int64_t sampleEvery = std::max<std::int64_t>(1, std::llround(s.sampleInterval / dt));
     const double setKT = sys.forceParameters.kT;
     TemperatureProbeResult r;
-    std::vector<double> samples;
-    double stepSeconds = 0.0;
+    std::vector<double> samples, pressures;
+    double stepSeconds = 0.0, stepCpuSeconds = 0.0;
     for (std::int64_t k = 1; k <= equilibration + production; ++k) {
         const auto t0 = std::chrono::steady_clock::now();
+        const double c0 = processCpuSeconds();
         integrator.step(sys);
+        stepCpuSeconds += processCpuSeconds() - c0;
         stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ++r.steps;
-        if (k == equilibration) stepSeconds = 0.0;  // time the production only
+        if (k == equilibration) stepSeconds = stepCpuSeconds = 0.0;  // time the production only
         const bool sample = k > equilibration && (k - equilibration) % sampleEvery == 0;
         if (!sample && k % s.checkEvery != 0) continue;
-        const MonitorReport m = monitor(sys, -1);
+        const MonitorReport m = monitor(sys, s.flowAxis);
         if (!m.finite || m.kT > s.maxKTRatio * setKT) {
             r.unstable = true;
             r.unstableAfter = k * dt;
             r.problem = !m.finite ? "non-finite positions, velocities or forces" : "kT runaway (kT = " + std::to_string(m.kT) + ")";
             return r;
         }
-        if (sample) samples.push_back(m.kT);
+        if (!sample) continue;
+        samples.push_back(m.kT);
+        if (s.samplePressure) pressures.push_back(instantaneousPressure(sys));
+        if (onSample) onSample(sys);
     }
     r.seconds = stepSeconds;
-    const std::vector<double> means = blockMeans(samples, s.blocks);
-    for (double m : means) r.kT += m;
-    r.kT /= static_cast<double>(s.blocks);
-    r.standardError = standardErrorOfMean(means) / s.blockEfficiency;
+    r.cpuSeconds = stepCpuSeconds;
+    blockEstimate(samples, s, r.kT, r.standardError);
+    if (s.samplePressure) blockEstimate(pressures, s, r.pressure, r.pressureStandardError);
     return r;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // How well an integrator holds the temperature: runs a system with it, watches it as a run's monitor
-// does (kT runaway, NaN), and measures the mean kinetic temperature with a block standard error. Used
-// by the integrator stability tests and the speed-accuracy benchmark.
+// does (kT runaway, NaN), and measures the mean kinetic temperature with a block standard error; on
+// request also the pressure (integrators/Pressure.hpp) from the same samples. Used by the integrator
+// stability tests and the speed-accuracy benchmark.
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace dpd {
@@ -20,6 +22,8 @@ struct TemperatureProbeSettings {
     double blockEfficiency = 1.0;
     double maxKTRatio = 2.0;          // the runaway check of a run (stability { maxKTRatio })
     int checkEvery = 10;              // steps between checks of the monitor
+    bool samplePressure = false;      // also the mean pressure, with its block standard error
+    int flowAxis = -1;                // the monitor's flow axis (kT about the local flow); -1: none
 };
 
 struct TemperatureProbeResult {
@@ -30,9 +34,16 @@ struct TemperatureProbeResult {
     std::string problem;
     std::int64_t steps = 0;      // steps made
     double seconds = 0.0;        // wall time of the production (steps only, no sampling)
+    // CPU time of the process (all threads) over the same steps: the work done, which unlike the wall
+    // time does not grow when other jobs share the machine's cores.
+    double cpuSeconds = 0.0;
+    double pressure = 0.0;       // mean pressure (samplePressure only)
+    double pressureStandardError = 0.0;  // block standard error / blockEfficiency
 };
 
-// Runs sys with the integrator for equilibrationTime + productionTime at sys.dt().
-TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, const TemperatureProbeSettings& s);
+// Runs sys with the integrator for equilibrationTime + productionTime at sys.dt(). `onSample`, when
+// given, is called at every sample of the production (after the monitor's check), for other samplers.
+TemperatureProbeResult probeTemperature(System& sys, Integrator& integrator, const TemperatureProbeSettings& s,
+                                        const std::function<void(const System&)>& onSample = {});
 
 }  // namespace dpd

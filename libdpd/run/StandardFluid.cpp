@@ -8,10 +8,12 @@ namespace dpd {
 
 System makeStandardFluid(const StandardFluidSettings& s) {
     System sys;
-    const double side = s.dimension == 3 ? std::cbrt(s.particles / s.density) : std::sqrt(s.particles / s.density);
+    const double volume = s.particles / s.density;
+    const Eigen::Vector3d a = s.aspect;
+    const double unit = s.dimension == 3 ? std::cbrt(volume / (a.x() * a.y() * a.z())) : std::sqrt(volume / (a.x() * a.z()));
     sys.box.dimension = s.dimension;
     sys.box.lo = Eigen::Vector3d(0, 0, 0);
-    sys.box.hi = Eigen::Vector3d(side, s.dimension == 3 ? side : 1.0, side);
+    sys.box.hi = Eigen::Vector3d(unit * a.x(), s.dimension == 3 ? unit * a.y() : 1.0, unit * a.z());
     sys.species.add({"fluid", false});
     sys.pairs = PairTable(1);
     sys.pairs.set(0, 0, {s.a, s.gamma, 0.0, true});

@@ -14,9 +14,11 @@ struct StandardFluidSettings {
     double cutoff = 1.0;
     int dimension = 3;
     std::uint64_t seed = 1;
+    // Relative edge lengths x y z (y unused in 2-D); the volume stays particles / density.
+    Eigen::Vector3d aspect{1.0, 1.0, 1.0};
 };
 
-// A cubic (square in 2-D) box holding about `particles` at the density, random positions, Maxwellian
+// A box (cubic, square in 2-D, unless `aspect` says otherwise) holding about `particles` at the density, random positions, Maxwellian
 // velocities with zero total momentum, initialised with forces computed.
 System makeStandardFluid(const StandardFluidSettings& s);
 

@@ -34,6 +34,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 using namespace dpd;
@@ -72,6 +73,16 @@ struct StabilityCase {
 };
 
 std::string caseName(const ::testing::TestParamInfo<StabilityCase>& info) { return info.param.name; }
+
+const char* regimeName(Regime r) { return r == Regime::holds ? "holds" : r == Regime::drifts ? "drifts" : "blowsUp"; }
+
+// How gtest (and so ctest's test list) shows a case: without it, the struct's raw bytes.
+void PrintTo(const StabilityCase& c, std::ostream* os) {
+    *os << c.type;
+    if (std::string(c.type) == "GrootWarren") *os << " lambda " << c.lambda;
+    *os << " dt " << c.dt << " " << regimeName(c.regime);
+    if (c.regime != Regime::blowsUp) *os << " bound " << c.bound;
+}
 
 class IntegratorStability : public ::testing::TestWithParam<StabilityCase> {};
 

@@ -1,11 +1,25 @@
 #!/usr/bin/env python3
 """Speed-accuracy tutorial: picture, results table and checks.
 
-Reads postProcessing/integratorSpeedAccuracy/speedAccuracy.dat (one row per integrator and step),
-draws |kT error| against the cost of one time unit (one curve per integrator) and the stability map
-(the step at which each integrator's kT error passes 1 % and 5 %, by linear interpolation between the
-measured steps, and the first step at which the run's monitor stopped it), writes results.dat and
-exits non-zero when a check fails.
+Reads postProcessing/integratorSpeedAccuracy/speedAccuracy.dat (one row per integrator and step) and
+draws, one curve per integrator, |error| against the cost of one time unit for the kinetic
+temperature, the pressure and the viscosity (the last two against the reference run named in the
+table's header), and the stability map (the step at which each integrator's kT error passes 1 % and
+5 %, by linear interpolation between the measured steps, and the first step at which the run's
+monitor stopped it). Writes results.dat and exits non-zero when a check fails.
+
+results.dat also gives
+  - the recommended step per integrator: the largest measured step below which the kT error stays
+    within 1 % (|error| <= 1 % at it and at every smaller measured step);
+  - the speed-up at equal accuracy against Groot-Warren (lambda 0.65) at dt 0.02. "Equal accuracy":
+    a step of a method qualifies when each of its kT, pressure and viscosity errors is no larger than
+    Groot-Warren's at 0.02 within error bars, |e| <= |e_GW| + 2 sqrt(se^2 + se_GW^2) (two combined
+    standard errors); the method's equal-accuracy step is the largest step up to which every measured
+    step qualifies. Speed-up = cost(GW at 0.02) / cost(method at that step), cost being seconds per
+    particle per time unit.
+
+Cost is CPU time (all threads) per particle per time unit, so that other jobs on the machine do not
+inflate it.
 """
 import math
 import sys
@@ -17,35 +31,49 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 TABLE = "postProcessing/integratorSpeedAccuracy/speedAccuracy.dat"
+BASELINE = ("GrootWarren0.65", 0.02)  # the method and step the speed-up is measured against
+QUANTITIES = (("kT", "kT"), ("P", "pressure"), ("nu", "viscosity"))
+COLUMNS = ("dt kT kTse pressure pressureSe P Pse nu nuSe nuRel nuRelSe cost unstable after").split()
 
 
 def read_rows(path):
-    rows = {}
+    rows, reference = {}, ""
     with open(path) as f:
         for line in f:
+            if "relative to the reference," in line:
+                reference = line.split("relative to the reference,")[1].split(", their SE")[0].strip()
             if line.startswith("#") or not line.strip():
                 continue
-            label, dt, err, se, cost, unstable, after = line.split()
-            rows.setdefault(label, []).append(
-                dict(dt=float(dt), err=float(err), se=float(se), cost=float(cost), unstable=int(unstable) == 1))
+            fields = line.split()
+            values = dict(zip(COLUMNS, (float(x) for x in fields[1:])))
+            # Columns as named by the table: kT error, pressure error (P), viscosity error (nu).
+            p = dict(dt=values["dt"], cost=values["cost"], unstable=int(values["unstable"]) == 1,
+                     kT=values["kT"], kTse=values["kTse"], P=values["P"], Pse=values["Pse"],
+                     nu=values["nuRel"], nuse=values["nuRelSe"], pressure=values["pressure"],
+                     viscosity=values["nu"])
+            rows.setdefault(fields[0], []).append(p)
     for label in rows:
         rows[label].sort(key=lambda r: r["dt"])
-    return rows
+    return rows, reference
+
+
+def measured(p, q):
+    return not p["unstable"] and not math.isnan(p[q])
 
 
 def crossing(points, level):
-    """The step at which |error| first passes level: interpolated between the last step below it and
-    the first above it (a blow-up counts as above); None when never passed, '<dt' when already at the
-    smallest step."""
+    """The step at which |kT error| first passes level: interpolated between the last step below it
+    and the first above it (a blow-up counts as above); None when never passed, '<dt' when already at
+    the smallest step."""
     previous = None
     for p in points:
-        above = p["unstable"] or abs(p["err"]) > level
+        above = p["unstable"] or abs(p["kT"]) > level
         if above:
             if previous is None:
                 return "<%g" % p["dt"]
             if p["unstable"]:
                 return "%.3g-%.3g" % (previous["dt"], p["dt"])
-            e0, e1 = abs(previous["err"]), abs(p["err"])
+            e0, e1 = abs(previous["kT"]), abs(p["kT"])
             return "%.3g" % (previous["dt"] + (level - e0) * (p["dt"] - previous["dt"]) / (e1 - e0))
         previous = p
     return None
@@ -58,20 +86,64 @@ def first_unstable(points):
     return None
 
 
-def main():
-    rows = read_rows(TABLE)
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5))
+def recommended(points, level=0.01):
+    """The largest measured step with |kT error| <= level there and at every smaller step."""
+    best = None
+    for p in points:
+        if p["unstable"] or abs(p["kT"]) > level:
+            break
+        best = p
+    return best
+
+
+def as_accurate(p, base, quantities):
+    """Whether every error of p is within base's, within two combined standard errors."""
+    for q in quantities:
+        if not measured(p, q):
+            return False
+        if abs(p[q]) > abs(base[q]) + 2 * math.hypot(p[q + "se"], base[q + "se"]):
+            return False
+    return True
+
+
+def equal_accuracy_step(points, base, quantities):
+    best = None
+    for p in points:
+        if not as_accurate(p, base, quantities):
+            break
+        best = p
+    return best
+
+
+def plot(rows, reference):
+    fig, axes = plt.subplots(2, 2, figsize=(13, 10))
+    panels = list(zip(axes.flat[:3], QUANTITIES))
     markers = "osD^v<>"
     for k, (label, points) in enumerate(rows.items()):
-        ok = [p for p in points if not p["unstable"]]
-        if ok:
+        for ax, (q, name) in panels:
+            # The reference run's own pressure and viscosity errors are zero by definition: not drawn.
+            ok = [p for p in points if measured(p, q) and not (q != "kT" and p[q] == 0.0)]
+            if not ok:
+                continue
             cost = np.array([p["cost"] for p in ok])
-            err = np.array([max(abs(p["err"]), 1e-5) for p in ok])
-            se = np.array([p["se"] for p in ok])
-            ax1.errorbar(cost, 100 * err, yerr=100 * se, marker=markers[k % len(markers)], label=label, capsize=2)
+            err = np.array([max(abs(p[q]), 1e-5) for p in ok])
+            se = np.array([p[q + "se"] for p in ok])
+            ax.errorbar(cost, 100 * err, yerr=100 * se, marker=markers[k % len(markers)], label=label, capsize=2)
             for p, c, e in zip(ok, cost, err):
-                ax1.annotate("%g" % p["dt"], (c, 100 * e), fontsize=6, xytext=(3, 3), textcoords="offset points")
-        stable_dt = [p["dt"] for p in ok]
+                ax.annotate("%g" % p["dt"], (c, 100 * e), fontsize=6, xytext=(3, 3), textcoords="offset points")
+    for ax, (q, name) in panels:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.axhline(1, color="tab:green", lw=0.8, ls="--")
+        ax.axhline(5, color="tab:orange", lw=0.8, ls="--")
+        ax.set_xlabel("cost: CPU seconds per particle per time unit")
+        ax.set_ylabel("|%s error| (%%)  (labels: dt)" % name)
+        against = "set kT" if q == "kT" else (reference or "the reference")
+        ax.set_title("%s error against cost (against %s)" % (name, against), fontsize=10)
+        ax.legend(fontsize=7)
+    ax2 = axes.flat[3]
+    for k, (label, points) in enumerate(rows.items()):
+        stable_dt = [p["dt"] for p in points if not p["unstable"]]
         ax2.plot(stable_dt, [k] * len(stable_dt), "|", color="grey", markersize=12)
         for level, colour in ((0.01, "tab:green"), (0.05, "tab:orange")):
             c = crossing(points, level)
@@ -80,40 +152,86 @@ def main():
         u = first_unstable(points)
         if u is not None:
             ax2.plot(u, k, "x", color="tab:red", markersize=10, mew=2)
-    ax1.set_xscale("log")
-    ax1.set_yscale("log")
-    ax1.axhline(1, color="tab:green", lw=0.8, ls="--")
-    ax1.axhline(5, color="tab:orange", lw=0.8, ls="--")
-    ax1.set_xlabel("cost: seconds per particle per time unit")
-    ax1.set_ylabel("|kT error| (%)  (labels: dt)")
-    ax1.set_title("kT error against cost (standard fluid)")
-    ax1.legend(fontsize=8)
     ax2.set_yticks(range(len(rows)))
     ax2.set_yticklabels(list(rows.keys()))
     ax2.set_xlabel("dt")
-    ax2.set_title("stability map: | measured, o 1 % (green) and 5 % (orange), x blow-up")
-    ax2.title.set_fontsize(9)
+    ax2.set_title("stability map: | measured, o kT error 1 % (green) and 5 % (orange), x blow-up", fontsize=9)
     fig.tight_layout()
     fig.savefig("speedAccuracy.png", dpi=120)
 
-    lines = ["# integrator dt1percent dt5percent dtBlowUp   (interpolated between measured steps; '-' when not reached)"]
+
+def fmt(x):
+    return "-" if x is None else "%g" % x
+
+
+def results(rows, reference):
+    lines = ["# Stability map and recommended step (kT error; crossings interpolated between measured steps,",
+             "# '-' when not reached; recommended: largest measured step with |kT error| <= 1 % up to it)",
+             "# integrator dt1percent dt5percent dtBlowUp recommendedDt1percent"]
     for label, points in rows.items():
         c1, c5, u = crossing(points, 0.01), crossing(points, 0.05), first_unstable(points)
-        lines.append("%-16s %-10s %-10s %s" % (label, c1 or "-", c5 or "-", "%g" % u if u else "-"))
-    with open("results.dat", "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+        r = recommended(points)
+        lines.append("%-16s %-10s %-10s %-8s %s" % (label, c1 or "-", c5 or "-", fmt(u), fmt(r and r["dt"])))
+    label, dt = BASELINE
+    base = next((p for p in rows.get(label, []) if abs(p["dt"] - dt) < 1e-12), None)
+    if base is None or base["unstable"]:
+        lines.append("# no speed-up: %s at dt %g was not measured (or not stable)" % BASELINE)
+        return lines, None
+    quantities = [q for q, _ in QUANTITIES if measured(base, q)]
+    lines += ["#",
+              "# Equal accuracy against %s at dt %g (errors: kT %.3g +- %.3g, pressure %.3g +- %.3g, viscosity %.3g +- %.3g;"
+              % (label, dt, base["kT"], base["kTse"], base["P"], base["Pse"], base["nu"], base["nuse"]),
+              "# pressure and viscosity against %s): a step qualifies when each of its %s errors is at most" % (
+                  reference or "the reference", ", ".join(quantities)),
+              "# GW's + 2 combined SE; the equal-accuracy step is the largest one up to which every step qualifies.",
+              "# speedUp = cost(GW at %g) / cost(method at its equal-accuracy step)." % dt,
+              "# integrator equalAccuracyDt secondsPerParticleTimeUnit speedUp"]
+    best = None
+    for name, points in rows.items():
+        p = equal_accuracy_step(points, base, quantities)
+        if p is None:
+            lines.append("%-16s -" % name)
+            continue
+        speed_up = base["cost"] / p["cost"]
+        lines.append("%-16s %-8g %-10.3g %.2f" % (name, p["dt"], p["cost"], speed_up))
+        if best is None or speed_up > best[1]:
+            best = (name, speed_up, p["dt"])
+    if best:
+        lines.append("# best: %s at dt %g simulates one time unit %.2f times faster than %s at dt %g"
+                     % (best[0], best[2], best[1], label, dt))
+    return lines, best
 
-    # Checks: every Verlet-type scheme holds kT within 5 % (plus 4 standard errors) at the smallest
-    # step here, and the largest step here stops every scheme, as measured (blow-up from 0.12-0.13).
+
+def checks(rows):
+    """Every Verlet-type scheme holds kT within 5 % (plus 4 standard errors) at the smallest step here
+    (at most 0.02), and its pressure and viscosity within 5 % and 10 % of the reference (plus 4 SE);
+    the largest step here stops every scheme when it is 0.15 or more (measured blow-up 0.12-0.13)."""
     failures = []
     for label, points in rows.items():
         first, last = points[0], points[-1]
         if label != "Euler" and first["dt"] <= 0.02:
-            if first["unstable"] or abs(first["err"]) > 0.05 + 4 * first["se"]:
-                failures.append("%s: kT error %.3g at dt %g" % (label, first["err"], first["dt"]))
+            if first["unstable"]:
+                failures.append("%s: unstable at dt %g" % (label, first["dt"]))
+            else:
+                for q, bound in (("kT", 0.05), ("P", 0.05), ("nu", 0.10)):
+                    if not math.isnan(first[q]) and abs(first[q]) > bound + 4 * first[q + "se"]:
+                        failures.append("%s: %s error %.3g +- %.3g at dt %g" % (label, q, first[q], first[q + "se"], first["dt"]))
         if last["dt"] >= 0.15 and not last["unstable"]:
             failures.append("%s: not stopped at dt %g" % (label, last["dt"]))
+    return failures
+
+
+def main():
+    rows, reference = read_rows(TABLE)
+    plot(rows, reference)
+    lines, _ = results(rows, reference)
+    text = "\n".join(lines) + "\n"
+    with open("results.dat.tmp", "w") as f:
+        f.write(text)
+    import os
+    os.replace("results.dat.tmp", "results.dat")
+    print(text, end="")
+    failures = checks(rows)
     for f in failures:
         print("CHECK FAILED:", f)
     return 1 if failures else 0
