@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace dpd {
@@ -38,6 +39,19 @@ struct PairLoopContext {
     const PairRandom& random;
     std::uint64_t step;
 };
+
+// What an evaluator needs beyond the separation. An evaluator that declares
+// `static constexpr bool kUsesRandom = false` is passed zeta = 0 and the loop draws no random numbers;
+// one that declares `kUsesVelocity = false` is passed rDotV = 0 and the loop gathers no velocities.
+// Without the declaration both are computed.
+template <class E, class = void>
+struct EvaluatorUsesRandom : std::true_type {};
+template <class E>
+struct EvaluatorUsesRandom<E, std::void_t<decltype(E::kUsesRandom)>> : std::bool_constant<E::kUsesRandom> {};
+template <class E, class = void>
+struct EvaluatorUsesVelocity : std::true_type {};
+template <class E>
+struct EvaluatorUsesVelocity<E, std::void_t<decltype(E::kUsesVelocity)>> : std::bool_constant<E::kUsesVelocity> {};
 
 // Adds to p.f the force of every interacting pair closer than the cutoff. The evaluator gives the
 // force over r for one pair: double forceOverR(double r2, double rDotV, const PairCoeffs&, double zeta),

@@ -118,19 +118,28 @@ inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const 
     double* __restrict ca = batch.a.data();
     double* __restrict cg = batch.gamma.data();
     double* __restrict cs = batch.sigma.data();
+    constexpr bool kRandom = EvaluatorUsesRandom<Evaluator>::value;
+    constexpr bool kVelocity = EvaluatorUsesVelocity<Evaluator>::value;
     for (std::size_t k = 0; k < n; ++k) {
         const std::uint32_t i = bi[k], j = bj[k];
-        rDotV[k] = bdx[k] * (vx[i] - vx[j]) + bdy[k] * (vy[i] - vy[j]) + bdz[k] * (vz[i] - vz[j]);
-        const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
-        idLo[k] = static_cast<std::uint32_t>(lo);
-        idHi[k] = static_cast<std::uint32_t>(hi);
+        if constexpr (kVelocity)
+            rDotV[k] = bdx[k] * (vx[i] - vx[j]) + bdy[k] * (vy[i] - vy[j]) + bdz[k] * (vz[i] - vz[j]);
+        else
+            rDotV[k] = 0.0;
+        if constexpr (kRandom) {
+            const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
+            idLo[k] = static_cast<std::uint32_t>(lo);
+            idHi[k] = static_cast<std::uint32_t>(hi);
+        }
         if constexpr (!kCommon) {
             const PairCoeffs& c = ctx.table(sp[i], sp[j]);
             ca[k] = c.a; cg[k] = c.gamma; cs[k] = c.sigma;
         }
     }
     double* __restrict zeta = batch.zeta.data();
-    ctx.random.orderedPairUniforms(ctx.step, idLo, idHi, zeta, n);
+    // The partial evaluators of the split integrators ignore zeta: no Philox for them.
+    if constexpr (kRandom) ctx.random.orderedPairUniforms(ctx.step, idLo, idHi, zeta, n);
+    else std::fill(zeta, zeta + n, 0.0);
     double* __restrict s = batch.forceOverR.data();
     const PairCoeffs common = plan.common;
     for (std::size_t k = 0; k < n; ++k) {

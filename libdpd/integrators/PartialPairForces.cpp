@@ -11,6 +11,8 @@ namespace {
 
 // a (1 - r/rc) e only.
 struct ConservativePairEvaluator {
+    static constexpr bool kUsesRandom = false;
+    static constexpr bool kUsesVelocity = false;
     double invCutoff;
     explicit ConservativePairEvaluator(const PairForceParameters& p) : invCutoff(1.0 / p.cutoff) {}
     inline double forceOverR(double r2, double /*rDotV*/, const PairCoeffs& c, double /*zeta*/) const {
@@ -22,6 +24,7 @@ struct ConservativePairEvaluator {
 // -gamma w_D(r) (e . v_ij) e only, with w_D = (1 - r/rc)^s.
 template <bool kStandardWeight>
 struct DissipativePairEvaluator {
+    static constexpr bool kUsesRandom = false;
     double invCutoff;
     double exponent;
     explicit DissipativePairEvaluator(const PairForceParameters& p)

@@ -341,3 +341,70 @@ void checkMixedSpecies(bool extraNonInteracting) {
 TEST(CellList, FrozenPairsAreNeverVisitedAndPerPairCoefficientsAreUsed) { checkMixedSpecies(false); }
 
 TEST(CellList, NonInteractingMobilePairsAreFilteredBySpecies) { checkMixedSpecies(true); }
+
+namespace {
+
+// Records (r^2, r.v, zeta) of every pair; kRandom / kVelocity are what it declares it needs.
+template <bool kRandom, bool kVelocity>
+struct DeclaringEvaluator {
+    static constexpr bool kUsesRandom = kRandom;
+    static constexpr bool kUsesVelocity = kVelocity;
+    std::vector<std::vector<std::tuple<double, double, double>>>* perThread;
+    inline double forceOverR(double r2, double rDotV, const PairCoeffs& /*c*/, double zeta) const {
+        (*perThread)[omp_get_thread_num()].emplace_back(r2, rDotV, zeta);
+        return 0.0;
+    }
+};
+
+template <class Evaluator>
+std::vector<std::tuple<double, double, double>> recordedPairs(Particles& p, const PairLoopContext& ctx, double cutoff) {
+    std::vector<std::vector<std::tuple<double, double, double>>> perThread(omp_get_max_threads());
+    accumulatePairForces(p, ctx, Evaluator{&perThread}, cutoff);
+    std::vector<std::tuple<double, double, double>> all;
+    for (const auto& v : perThread) all.insert(all.end(), v.begin(), v.end());
+    std::sort(all.begin(), all.end());
+    return all;
+}
+
+}  // namespace
+
+static_assert(EvaluatorUsesRandom<RecordingEvaluator>::value, "an evaluator that declares nothing gets zeta");
+static_assert(EvaluatorUsesVelocity<RecordingEvaluator>::value, "an evaluator that declares nothing gets r.v");
+static_assert(!EvaluatorUsesRandom<DeclaringEvaluator<false, true>>::value, "");
+static_assert(!EvaluatorUsesVelocity<DeclaringEvaluator<true, false>>::value, "");
+
+TEST(CellList, EvaluatorsThatNeedNoNoiseOrVelocityGetZerosForTheSamePairs) {
+    // The conservative-only and dissipative-only evaluators of the split integrators declare that they
+    // use no random number (and the conservative one no velocity): the loop must then pass exact zeros
+    // instead, and visit the very same pairs with the same r^2 (and r.v where it is still used).
+    Box box;
+    box.lo = Eigen::Vector3d(0, 0, 0);
+    box.hi = Eigen::Vector3d(4.3, 3.6, 5.2);
+    Particles p = randomParticles(box, 3.0, 7);
+    CellList cells;
+    cells.setup(box, 1.0);
+    cells.sortParticles(p);
+    const PairRandom random(99);
+    PairTable table(1);
+    table.set(0, 0, {25.0, 4.5, 3.0, true});
+    const PairLoopContext ctx{cells, table, random, 5};
+
+    const auto full = recordedPairs<DeclaringEvaluator<true, true>>(p, ctx, 1.0);
+    const auto noNoise = recordedPairs<DeclaringEvaluator<false, true>>(p, ctx, 1.0);
+    const auto neither = recordedPairs<DeclaringEvaluator<false, false>>(p, ctx, 1.0);
+    ASSERT_GT(full.size(), 100u);
+    ASSERT_EQ(noNoise.size(), full.size());
+    ASSERT_EQ(neither.size(), full.size());
+    // The full evaluator really sees noise and velocities (so the zeros below are not trivially true).
+    EXPECT_TRUE(std::any_of(full.begin(), full.end(), [](const auto& t) { return std::get<2>(t) != 0.0; }));
+    EXPECT_TRUE(std::any_of(full.begin(), full.end(), [](const auto& t) { return std::get<1>(t) != 0.0; }));
+    // Sorted by (r^2, r.v, zeta): the pairs line up one to one (their r^2 are distinct in this sample).
+    for (std::size_t k = 0; k < full.size(); ++k) {
+        EXPECT_EQ(std::get<0>(noNoise[k]), std::get<0>(full[k]));
+        EXPECT_EQ(std::get<1>(noNoise[k]), std::get<1>(full[k]));
+        EXPECT_EQ(std::get<2>(noNoise[k]), 0.0);
+        EXPECT_EQ(std::get<0>(neither[k]), std::get<0>(full[k]));
+        EXPECT_EQ(std::get<1>(neither[k]), 0.0);
+        EXPECT_EQ(std::get<2>(neither[k]), 0.0);
+    }
+}
