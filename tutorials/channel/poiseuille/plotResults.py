@@ -98,6 +98,12 @@ def main():
     bulk = np.abs(z - centre) < 0.5 * d - 3.0 * cutoff
     kT_matched = np.interp(shear_c, shear_p, kT_p)
     heating_diff = np.average(kT[bulk] - kT_matched[bulk], weights=count[bulk])
+    # In the full channel (d = 40) the bulk lies 3 to 20 cutoffs from the walls: +0.3 % measured, held
+    # to 1 %. In the test channel (d = 10) it lies only 3 to 5 cutoffs from the walls, whose frozen
+    # particles are a heat sink that reaches it: -0.6 +- 0.4 % over four seeds (-1.1, -0.8, -0.5,
+    # -0.2 %), so the test holds it to 2 % (4 standard deviations beyond that mean), still far below
+    # what a wrong thermostat or a missing heating would give (the heating itself is +4 %).
+    kT_tolerance = 0.02 if test else 0.01
     kT_periodic_mean = np.average(periodic["kT"], weights=periodic["count"])
 
     # Checks (the criteria). Where the run is short (-test), statistics are weaker: the
@@ -107,9 +113,9 @@ def main():
     checks = [
         ("nu(wall fit) within 3% of nu(no walls)", abs(rel_nu) < 0.03 or (test and abs(rel_nu) < 4 * nu_sigma),
          f"{100 * rel_nu:+.2f} % (1 sigma {100 * nu_sigma:.2f} %)"),
-        ("kT within 1% of the no-wall fluid's at the same shear rate (channel bulk)",
-         abs(heating_diff / kTset) < 0.01, f"mean difference {heating_diff:+.4f} (channel mean kT {kT_mean:.4f}, "
-         f"no-wall box {kT_periodic_mean:.4f})"),
+        (f"kT within {100 * kT_tolerance:g}% of the no-wall fluid's at the same shear rate (channel bulk)",
+         abs(heating_diff / kTset) < kT_tolerance, f"mean difference {heating_diff:+.4f} (channel mean kT "
+         f"{kT_mean:.4f}, no-wall box {kT_periodic_mean:.4f})"),
         ("density flat within 5% beyond one cutoff from the walls", flatness < 0.05, f"max deviation {100 * flatness:.2f} %"),
     ]
     # No slip. The test keeps the full scene's wall shear rate, so its slip length is measured to
