@@ -218,7 +218,8 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     s.dpdProperties = dpdProperties;
     s.model = readDpdModel(dpdProperties);
     const Dictionary& d = s.dict;
-    d.checkKeys({"mode", "profile", "component", "exclude", "fitRange"});
+    d.checkKeys({"mode", "profile", "component", "exclude", "fitRange", "slipPredictionNu"});
+    if (d.found("slipPredictionNu")) s.slipPredictionNu = d.getPositive<double>("slipPredictionNu");
 
     const std::string mode = d.get<std::string>("mode");
     if (mode == "poiseuille") s.mode = FitSlipLengthMode::poiseuille;
@@ -271,6 +272,29 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : defaultExclude;
     return s;
 }
+
+namespace {
+
+// The predicted slip length of tunable-slip channel walls, from the central density and nu (the
+// dictionary's slipPredictionNu, else the fit's own).
+void predictSlip(const FitSlipLengthSetup& s, const ProfileTableData& t, FitSlipLengthResult& r) {
+    const auto [lower, upper] = channelWalls(s, t, r.axis);
+    if (!lower->hasTunableSlip && !upper->hasTunableSlip) return;
+    const bool given = s.slipPredictionNu > 0.0;
+    const bool fitted = r.mode == FitSlipLengthMode::poiseuille || r.hasStress;
+    if (!given && !fitted)
+        s.dict.fail("slipPredictionNu", "the walls have tunable slip but this fit measures no viscosity: give "
+                                        "slipPredictionNu (or sample the stress) for the predicted slip length");
+    const double nu = given ? s.slipPredictionNu : r.mode == FitSlipLengthMode::poiseuille ? r.poiseuille.nu : r.stress.nu;
+    try {
+        r.slipPrediction = predictTunableSlip(*lower, *upper, r.densityCentral, nu,
+                                              given ? s.dict.fileName() + " slipPredictionNu" : "fit");
+    } catch (const std::invalid_argument& e) {
+        s.dict.fail(given ? "slipPredictionNu" : "", std::string("no predicted slip length: ") + e.what());
+    }
+}
+
+}  // namespace
 
 FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTableData& t, const std::string& time) {
     const Dictionary& d = s.dict;
@@ -326,6 +350,7 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     r.nuKineticTheory = std::isfinite(r.gamma) && r.gamma > 0.0 && std::isfinite(r.densityCentral) && r.densityCentral > 0.0
                             ? kineticTheoryViscosity(s.model.kT, r.gamma, r.densityCentral, s.model.cutoff)
                             : std::numeric_limits<double>::quiet_NaN();
+    if (s.mode != FitSlipLengthMode::reversePoiseuille) predictSlip(s, t, r);
     return r;
 }
 
@@ -395,6 +420,7 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
         d.setValue("nuSecondHalfError", p.nuSecondHalfErr);
         d.setValue("chi2PerDof", p.chi2PerDof);
     }
+    writeTunableSlipPrediction(d, r.slipPrediction);
     // An estimate for reference, not a measurement; "none" when it cannot be formed.
     if (std::isfinite(r.nuKineticTheory)) {
         d.setValue("nuKineticTheory", r.nuKineticTheory);
@@ -464,6 +490,14 @@ void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
         row("nu (+g half)", withErr(p.nuFirstHalf, p.nuFirstHalfErr));
         row("nu (-g half)", withErr(p.nuSecondHalf, p.nuSecondHalfErr));
         row("chi2/dof", num(p.chi2PerDof));
+    }
+    if (r.slipPrediction.any) {
+        const TunableSlipPrediction& sp = r.slipPrediction;
+        const auto predicted = [&](int k) {
+            return sp.tunable[k] ? num(sp.slipLength[k]) + " (alpha " + num(sp.alpha[k]) + ")" : std::string("none");
+        };
+        row("slip length predicted", predicted(0), predicted(1));
+        row("", "(tunable slip, rho = " + num(sp.density) + ", nu = " + num(sp.nu) + " from " + sp.nuSource + ")");
     }
     if (std::isfinite(r.nuKineticTheory))
         row("nu kinetic theory", num(r.nuKineticTheory),

@@ -12,6 +12,11 @@
 //                               // couette: distance from each wall left out (default 1 cutoff)
 //   fitRange   (-10 10);        // couette only, instead of exclude: the range of the profile axis
 //                               // the line is fitted over
+//   slipPredictionNu 0.3;       // optional: the kinematic viscosity for the predicted slip length of
+//                               // tunable-slip walls (default: the fit's own nu)
+//
+// When a channel wall has tunable slip (walls/TunableSlipWall.hpp) the predicted slip length is written
+// beside the measured one (analysis/TunableSlipPrediction.hpp): slipLengthPredicted (lower upper).
 //
 // poiseuille: the walls are the two planar walls of constant/dpdProperties whose normals lie along
 // the profile's axis; g is the uniform body force's component along `component`, and the walls'
@@ -34,6 +39,7 @@
 // before anything is written, so an error leaves the case as it was.
 #include "analysis/CouetteFit.hpp"
 #include "analysis/PoiseuilleFit.hpp"
+#include "analysis/TunableSlipPrediction.hpp"
 #include "io/Dictionary.hpp"
 #include "run/DpdProperties.hpp"
 #include "sampling/ProfileTable.hpp"
@@ -57,6 +63,7 @@ struct FitSlipLengthSetup {
     double exclude = 0.0;
     bool hasFitRange = false;         // couette: fitRange given
     double fitLow = 0.0, fitHigh = 0.0;
+    double slipPredictionNu = 0.0;    // > 0: slipPredictionNu given
 };
 
 // Checks keywords (unknown ones, mode, component, exclude) and resolves the component and the body
@@ -85,6 +92,7 @@ struct FitSlipLengthResult {
     double densityCentral = 0.0;  // count-weighted mean density of the central half of the bins
     double gamma = 0.0;
     double nuKineticTheory = 0.0;
+    TunableSlipPrediction slipPrediction;  // channel modes with tunable-slip walls
 };
 
 // Fits one profile table. InputError (naming fitSlipLengthDict or dpdProperties) when the setup does

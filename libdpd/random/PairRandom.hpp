@@ -103,6 +103,8 @@ enum RandomStream : std::uint32_t {
     kStreamReflection = 3,
     kStreamWallThermostat = 4,
     kStreamShardlowSweep = 5,  // pair Gaussians of Shardlow's dissipative-random sweep (pairGaussian)
+    kStreamTunableSlip = 6,    // random force of a tunable-slip wall (the wall's index in bits 8-14:
+                               // walls/TunableSlipWall.cpp tunableSlipStream)
 };
 
 }  // namespace dpd

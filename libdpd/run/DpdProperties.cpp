@@ -141,8 +141,19 @@ BodyForce readBodyForce(const Dictionary& d, int dimension) {
     return f;
 }
 
+// tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (METHODS.md 3.5): all four are needed.
+TunableSlipParameters readTunableSlip(const Dictionary& td) {
+    td.checkKeys({"gammaL", "zc", "epsilon", "sigma"});
+    TunableSlipParameters t;
+    t.gammaL = td.getNonNegative<double>("gammaL");
+    t.zc = td.getPositive<double>("zc");
+    t.epsilon = td.getPositive<double>("epsilon");
+    t.sigma = td.getPositive<double>("sigma");
+    return t;
+}
+
 PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dimension, double cutoff) {
-    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha"});
+    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha", "tunableSlip"});
     const std::string type = wd.get<std::string>("type");
     if (type != "plane") wd.fail("type", "expected plane (the only wall shape so far)");
     PlanarWall w;
@@ -155,8 +166,16 @@ PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dim
     w.velocity = wd.getOrDefault<Eigen::Vector3d>("velocity", Eigen::Vector3d::Zero());
     if (std::abs(w.velocity.dot(w.normal)) > 1e-12) wd.fail("velocity", "a wall can only slide in its own plane");
     if (dimension == 2 && w.velocity.y() != 0.0) wd.fail("velocity", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    if (wd.found("tunableSlip")) {
+        if (!wd.isDict("tunableSlip")) wd.fail("tunableSlip", "expected { gammaL ...; zc ...; epsilon ...; sigma ...; }");
+        w.hasTunableSlip = true;
+        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"));
+    }
+    // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
+    // since it adds no tangential friction of its own to the slip that gammaL sets.
+    const std::string defaultRule = w.hasTunableSlip ? "specular" : "bounceBack";
     try {
-        w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", "bounceBack"));
+        w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", defaultRule));
     } catch (const std::invalid_argument& e) {
         wd.fail("reflection", e.what());
     }
@@ -209,6 +228,11 @@ DpdModel readDpdModel(const Dictionary& d) {
     m.integrator = readIntegrator(d);
     m.bodyForce = readBodyForce(d, m.dimension);
     m.walls = readWalls(d, m.dimension, m.cutoff);
+    // Shardlow's splitting computes conservative forces only (PartialPairForces): it has no place yet
+    // for the tunable-slip wall's velocity-dependent force.
+    if (m.walls.anyTunableSlip() && m.integrator.type == "Shardlow")
+        d.subDict("integrator").fail("type", "the Shardlow integrator does not support tunableSlip walls yet: use "
+                                             "GrootWarren, DPDVV or Euler");
     m.stability = readStability(d);
     return m;
 }

@@ -16,6 +16,9 @@
 //              // reflection: none | specular | bounceBack | maxwellian | bounceForward
 //              //             | bounceLayer (with alpha 0.1: the layer is alpha x cutoff thick)
 //              // frozen particles behind a wall move with its velocity
+//              // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; }: a smooth wall acting on the
+//              // fluid within zc (friction gammaL) with a WCA repulsion (walls/TunableSlipWall.hpp);
+//              // its reflection defaults to specular, a safety net behind the WCA wall
 //   stability  { maxKTRatio 2; maxInsideWalls 0; }   // optional
 //   geometry   { type imageMask; file "constant/geometry/mask.png"; ... }   // optional: a solid of any
 //                                                 // shape (geometry/GeometryDictionary.hpp)

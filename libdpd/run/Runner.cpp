@@ -72,6 +72,11 @@ void printWalls(std::ostream& log, const System& sys) {
         const PlanarWall& wall = sys.walls[w];
         log << "    " << wall.name << ": reflection " << reflectionRuleName(wall.rule);
         if (wall.rule == ReflectionRule::bounceLayer) log << " (layer " << wall.layer << ")";
+        if (wall.hasTunableSlip) {
+            const TunableSlipParameters& t = wall.tunableSlip;
+            log << ", tunable slip (gammaL " << t.gammaL << ", zc " << t.zc << ", WCA epsilon " << t.epsilon
+                << ", sigma " << t.sigma << ")";
+        }
         log << ", velocity " << vectorText(wall.velocity) << ", " << sys.frozenPerWall()[w]
             << " frozen particles moving with it\n";
     }

@@ -52,6 +52,7 @@ void System::initialise() {
     random_ = PairRandom(seed);
     cells_.setup(box, forceParameters.cutoff);
     conservative_ = pairs.anyConservative();
+    tunableSlipWalls_ = walls.anyTunableSlip();
     const bool standardWeight = forceParameters.weightExponent == 2.0;
     if (conservative_) pairKernel_ = standardWeight ? &pairKernel<true, true> : &pairKernel<true, false>;
     else pairKernel_ = standardWeight ? &pairKernel<false, true> : &pairKernel<false, false>;
@@ -88,6 +89,9 @@ void System::computeForces() {
     const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step)};
     pairKernel_(particles, ctx, forceParameters);
     bodyForce.apply(particles, frozenOfSpecies_, box);
+    if (tunableSlipWalls_)
+        walls.addTunableSlipForces(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
+                                   forceParameters.kT, forceParameters.dt);
 }
 
 WallCounters System::applyWalls() {

@@ -59,7 +59,7 @@ public:
     // Reorders the particles by cell (call after moving, before computing forces).
     void sortByCell();
     // Forces at the current positions and velocities: pair forces (keyed to the current step's random
-    // numbers) plus the body force. Requires sortByCell() since the last move.
+    // numbers) plus the body force, plus the forces of tunable-slip walls when there are any. Requires sortByCell() since the last move.
     void computeForces();
     // Reflects fluid particles that crossed a wall during the last move (call before wrapPositions).
     WallCounters applyWalls();
@@ -82,6 +82,7 @@ private:
     std::vector<DeferredBounce> deferredBounces_;
     std::vector<long> frozenPerWall_;
     bool conservative_ = true;
+    bool tunableSlipWalls_ = false;  // some wall acts on the fluid with tunable-slip forces
     bool initialised_ = false;
 };
 

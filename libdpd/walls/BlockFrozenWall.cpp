@@ -7,6 +7,7 @@
 #include "run/InitialFlow.hpp"
 #include "walls/FrozenLattice.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dpd {
@@ -62,14 +63,25 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
     const double density = fd.getPositive<double>("density");
     const PairRandom random(model.seed);
     const WallSet& walls = model.walls;
-    report.fluid = fillRandom(snap.particles, snap.box, snap.box.lo, snap.box.hi, density, fluidSpecies,
-                              [&](double x, double y, double z) { return !walls.isInsideSolid(x, y, z); }, random, 0);
+    // Fluid starts at least sigma in front of a tunable-slip wall: nearer, its WCA repulsion (more than
+    // eps there, diverging at the plane) would throw the particle across the box on the first step.
+    const auto clearOfWalls = [&](double x, double y, double z) {
+        for (const PlanarWall& w : walls.walls())
+            if (w.signedDistance(x, y, z) < (w.hasTunableSlip ? w.tunableSlip.sigma : 0.0)) return false;
+        return true;
+    };
+    report.fluid = fillRandom(snap.particles, snap.box, snap.box.lo, snap.box.hi, density, fluidSpecies, clearOfWalls,
+                              random, 0);
     report.fluidVolume = report.fluid / density;
     maxwellVelocities(snap.particles, 0, report.fluid, model.dimension, model.kT, random);
     report.initialFlow = readInitialFlow(fd, model, snap.box, fluidSpecies, density);
     addInitialFlow(snap.particles, 0, report.fluid, report.initialFlow);
 
-    if (!walls.empty()) {
+    // Tunable-slip walls act on the fluid without frozen particles: when every wall is one, `wall` may
+    // be left out.
+    const bool everyWallSmooth = std::all_of(walls.walls().begin(), walls.walls().end(),
+                                             [](const PlanarWall& w) { return w.hasTunableSlip; });
+    if (!walls.empty() && !(everyWallSmooth && !d.found("wall"))) {
         if (!d.found("wall")) d.fail("wall", "constant/dpdProperties has walls: say how to build them");
         const Dictionary& wd = d.subDict("wall");
         const int wallSpecies = speciesIndex(wd, model, true);

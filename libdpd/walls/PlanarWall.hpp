@@ -7,6 +7,8 @@
 // A moving wall slides in its own plane (its velocity has no normal component), so the plane maps
 // onto itself and only the wall's frozen particles move: they carry the wall's velocity
 // (WallSet::assignFrozenVelocities) and drift with it like any particle.
+#include "walls/TunableSlipWall.hpp"
+
 #include <Eigen/Core>
 #include <string>
 
@@ -34,6 +36,10 @@ struct PlanarWall {
     Eigen::Vector3d velocity{0, 0, 0};
     ReflectionRule rule = ReflectionRule::bounceBack;
     double layer = 0.0;  // bounceLayer: thickness of the layer in front of the plane (alpha x cutoff)
+    // A smooth tunable-slip wall (Smiatek et al. 2008) acting on the fluid in front of the plane, in
+    // place of frozen particles; the reflection rule stays as a safety net behind its WCA repulsion.
+    bool hasTunableSlip = false;
+    TunableSlipParameters tunableSlip;
 
     // Positive on the fluid side, negative inside the solid.
     double signedDistance(double x, double y, double z) const {

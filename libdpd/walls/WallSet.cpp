@@ -146,6 +146,16 @@ bool WallSet::anyRule(ReflectionRule rule) const {
     return std::any_of(walls_.begin(), walls_.end(), [&](const PlanarWall& w) { return w.rule == rule; });
 }
 
+bool WallSet::anyTunableSlip() const {
+    return std::any_of(walls_.begin(), walls_.end(), [](const PlanarWall& w) { return w.hasTunableSlip; });
+}
+
+void WallSet::addTunableSlipForces(Particles& p, const std::vector<std::uint8_t>& frozen, const Box& box,
+                                   const PairRandom& random, std::uint64_t step, double kT, double dt) const {
+    for (std::size_t k = 0; k < walls_.size(); ++k)
+        if (walls_[k].hasTunableSlip) dpd::addTunableSlipForces(walls_[k], k, p, frozen, box, random, step, kT, dt);
+}
+
 std::string WallSet::thinWall(const Box& box, double depth) const {
     for (const auto& w : walls_) {
         // Probe just short of `depth` behind the plane, wrapped into the box: it must still be solid.

@@ -41,6 +41,12 @@ public:
     const PlanarWall& operator[](std::size_t i) const { return walls_[i]; }
     const std::vector<PlanarWall>& walls() const { return walls_; }
     bool anyRule(ReflectionRule rule) const;
+    bool anyTunableSlip() const;
+
+    // Adds the forces of the tunable-slip walls to the mobile particles in front of them
+    // (walls/TunableSlipWall.hpp); call after the pair forces. Walls without tunable slip add nothing.
+    void addTunableSlipForces(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies, const Box& box,
+                              const PairRandom& random, std::uint64_t step, double kT, double dt) const;
 
     // The name of the first wall whose solid, within the periodic box, is less than `depth` thick
     // (fluid on one side would then feel the fluid on the other side through the wall); empty if
