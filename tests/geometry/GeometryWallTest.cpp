@@ -20,14 +20,6 @@ using namespace geometryTest;
 
 namespace {
 
-Box box2d(double lx, double lz) {
-    Box b;
-    b.dimension = 2;
-    b.lo = Eigen::Vector3d(0, -0.5, 0);
-    b.hi = Eigen::Vector3d(lx, 0.5, lz);
-    return b;
-}
-
 const std::vector<std::uint8_t> kMobile{0};
 
 // A 2-D box 8 x 8 of 0.25 pixels with one solid pixel column at x in [4, 4.25): a wall one pixel

@@ -17,14 +17,6 @@ using namespace geometryTest;
 
 namespace {
 
-Box box2d(double lx, double lz) {
-    Box b;
-    b.dimension = 2;
-    b.lo = Eigen::Vector3d(0, -0.5, 0);
-    b.hi = Eigen::Vector3d(lx, 0.5, lz);
-    return b;
-}
-
 Dictionary maskDict(const std::string& file, const std::string& extra) {
     return Dictionary::parse("type imageMask; file \"" + file + "\"; " + extra, "geometryDict");
 }
