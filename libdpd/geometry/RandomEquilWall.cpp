@@ -69,6 +69,7 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     DpdModel fluidOnly = model;
     fluidOnly.bodyForce = BodyForce{};
     fluidOnly.walls = WallSet{};
+    fluidOnly.geometryWall = GeometryWallSettings{};  // the box is filled through the solid too
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict");
     const auto integrator = makeIntegrator(model.integrator);
     sys.sortByCell();

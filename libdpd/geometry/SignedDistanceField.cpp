@@ -14,6 +14,47 @@ SignedDistanceField::SignedDistanceField(const SolidGeometry& geometry, const Ba
         nodes_[c] = {static_cast<float>(s.distance),
                      {static_cast<float>(s.normal.x()), static_cast<float>(s.normal.y()), static_cast<float>(s.normal.z())}};
     }
+    smoothNormals();
+}
+
+Eigen::Vector3d SignedDistanceField::distanceGradient(const std::array<int, 3>& ijk, bool& reliable) const {
+    Eigen::Vector3d g(0, 0, 0);
+    reliable = true;
+    for (int a = 0; a < 3; ++a) {
+        if (grid_.n[a] < 3) continue;
+        std::array<int, 3> lo = ijk, hi = ijk;
+        lo[a] = BackgroundGrid::wrapIndex(ijk[a] - 1, grid_.n[a]);
+        hi[a] = BackgroundGrid::wrapIndex(ijk[a] + 1, grid_.n[a]);
+        const double dLo = nodes_[grid_.index(lo[0], lo[1], lo[2])].distance;
+        const double dHi = nodes_[grid_.index(hi[0], hi[1], hi[2])].distance;
+        // A neighbour clipped to the band has lost its slope: the difference would be too small.
+        if (std::abs(dLo) >= band_ || std::abs(dHi) >= band_) reliable = false;
+        g[a] = (dHi - dLo) / (2.0 * grid_.spacing[a]);
+    }
+    return g;
+}
+
+void SignedDistanceField::smoothNormals() {
+    // The nearest-point normal of a staircase contour (an image mask) tilts with every pixel step
+    // (up to ~14 degrees); the central-difference gradient of the distance over two cells averages
+    // those steps out. Where the difference is unreliable -- a neighbour clipped to the band, or a
+    // ridge of the distance (the middle of a channel, the inside of a thin solid), where the slopes
+    // on either side cancel and the gradient's length falls well below 1 or turns against the
+    // nearest-point normal -- the nearest-point normal is kept.
+    std::vector<Node> smoothed = nodes_;
+    const auto cells = static_cast<long>(grid_.size());
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < cells; ++c) {
+        const Node& node = nodes_[c];
+        const Eigen::Vector3d nearest(node.normal[0], node.normal[1], node.normal[2]);
+        if (nearest.squaredNorm() == 0.0) continue;
+        bool reliable = false;
+        const Eigen::Vector3d g = distanceGradient(grid_.cellIndices(static_cast<std::size_t>(c)), reliable);
+        const double length = g.norm();
+        if (!reliable || length < 0.8 || length > 1.2 || g.dot(nearest) < 0.7 * length) continue;
+        for (int a = 0; a < 3; ++a) smoothed[c].normal[a] = static_cast<float>(g[a] / length);
+    }
+    nodes_ = std::move(smoothed);
 }
 
 SurfaceDistance SignedDistanceField::at(const Eigen::Vector3d& r) const {

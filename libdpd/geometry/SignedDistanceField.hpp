@@ -7,12 +7,15 @@
 // Accuracy: the table holds the exact distance to the geometry's surface facets (SolidGeometry);
 // linear interpolation of a distance function adds at most h^2 / (8 R) for a surface of curvature
 // radius R on a grid of spacing h, and up to h/2 within a cell of a ridge (points equally near two
-// surfaces, like the middle of a channel) or a sharp corner. The normal is the direction to the
-// nearest surface point, interpolated and normalised. Beyond +-band the distance is clipped to
+// surfaces, like the middle of a channel) or a sharp corner. The normal is the central-difference
+// gradient of the tabulated distance (over two cells, which smooths the pixel staircase of image
+// masks) where that is reliable, else the direction to the nearest surface point; interpolated and
+// normalised. Beyond +-band the distance is clipped to
 // +-band and the normal is zero.
 #include "geometry/BackgroundGrid.hpp"
 #include "geometry/SolidGeometry.hpp"
 
+#include <array>
 #include <vector>
 
 namespace dpd {
@@ -31,6 +34,11 @@ public:
     double band() const { return band_; }
 
 private:
+    // The distance's central-difference gradient at a cell centre; reliable is false when a
+    // neighbour is clipped to the band.
+    Eigen::Vector3d distanceGradient(const std::array<int, 3>& ijk, bool& reliable) const;
+    void smoothNormals();
+
     struct Node {
         float distance;
         float normal[3];

@@ -1,5 +1,7 @@
 #include "run/DpdProperties.hpp"
 
+#include "geometry/GeometryDictionary.hpp"
+
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "io/Snapshot.hpp"
@@ -196,6 +198,28 @@ WallSet readWalls(const Dictionary& d, int dimension, double cutoff) {
     return walls;
 }
 
+// The geometry block (if any) and the rule of the wall it makes (geometryWall; walls/GeometryWall.hpp).
+GeometryWallSettings readGeometryWall(const Dictionary& d, double cutoff) {
+    GeometryWallSettings g;
+    if (!d.found("geometry")) {
+        if (d.found("geometryWall")) d.fail("geometryWall", "a geometryWall needs the geometry block it acts on");
+        return g;
+    }
+    g.geometry = std::make_shared<const Dictionary>(d.subDict("geometry"));
+    if (!d.found("geometryWall")) return g;
+    const Dictionary& wd = d.subDict("geometryWall");
+    wd.checkKeys({"reflection", "alpha"});
+    try {
+        g.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", "bounceBack"));
+    } catch (const std::invalid_argument& e) {
+        wd.fail("reflection", e.what());
+    }
+    if (g.rule == ReflectionRule::bounceForward) wd.fail("reflection", "bounceForward is for planar walls only");
+    if (g.rule == ReflectionRule::bounceLayer) g.layer = wd.getPositive<double>("alpha") * cutoff;
+    else if (wd.found("alpha")) wd.fail("alpha", "only reflection bounceLayer has a layer thickness alpha");
+    return g;
+}
+
 StabilitySettings readStability(const Dictionary& d) {
     StabilitySettings s;
     if (!d.found("stability")) return s;
@@ -213,7 +237,7 @@ StabilitySettings readStability(const Dictionary& d) {
 DpdModel readDpdModel(const Dictionary& d) {
     // geometry: the solid of any shape, read where it is used (geometry/GeometryDictionary).
     d.checkKeys({"dimension", "kT", "cutoff", "seed", "weightExponent", "species", "pairCoeffs", "integrator",
-                 "bodyForce", "walls", "stability", "geometry"});
+                 "bodyForce", "walls", "stability", "geometry", "geometryWall"});
     DpdModel m;
     m.dimension = d.getOrDefault<int>("dimension", 3);
     if (m.dimension != 2 && m.dimension != 3) d.fail("dimension", "must be 2 or 3");
@@ -233,12 +257,15 @@ DpdModel readDpdModel(const Dictionary& d) {
     if (m.walls.anyTunableSlip() && m.integrator.type == "Shardlow")
         d.subDict("integrator").fail("type", "the Shardlow integrator does not support tunableSlip walls yet: use "
                                              "GrootWarren, DPDVV or Euler");
+    m.geometryWall = readGeometryWall(d, m.cutoff);
     m.stability = readStability(d);
     return m;
 }
 
 DpdModel readDpdProperties(const std::string& caseDir) {
-    return readDpdModel(Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string()));
+    DpdModel m = readDpdModel(Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string()));
+    m.geometryWall.caseDir = caseDir;
+    return m;
 }
 
 System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile) {
@@ -274,6 +301,11 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
     if (!thin.empty())
         throw IoError("constant/dpdProperties: the solid behind wall '" + thin + "' is thinner than one cutoff inside the box of " +
                       snapshotFile + " (fluid would interact through the wall across the periodic boundary)");
+    if (model.geometryWall.geometry) {
+        SolidRegion solid = readSolidRegion(*model.geometryWall.geometry, model.geometryWall.caseDir, sys.box, model.cutoff);
+        sys.geometryWall = std::make_shared<GeometryWall>(std::move(solid.distance), model.geometryWall.rule,
+                                                          model.geometryWall.layer);
+    }
     sys.initialise();
     return sys;
 }

@@ -22,6 +22,9 @@
 //   stability  { maxKTRatio 2; maxInsideWalls 0; }   // optional
 //   geometry   { type imageMask; file "constant/geometry/mask.png"; ... }   // optional: a solid of any
 //                                                 // shape (geometry/GeometryDictionary.hpp)
+//   geometryWall { reflection bounceLayer; alpha 0.1; }  // optional, with geometry: how the solver
+//                                                 // keeps fluid out of that solid (walls/GeometryWall.hpp);
+//                                                 // any reflection but bounceForward, default bounceBack
 //
 // Every pair of species that can interact (at least one not frozen) needs its coefficients; pairs
 // of frozen species never interact and need none.
@@ -31,6 +34,7 @@
 #include "walls/WallSet.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,6 +49,15 @@ struct StabilitySettings {
     long maxInsideWalls = 0;  // stop when more mobile particles than this are found inside walls
 };
 
+// The wall of any shape: the geometry block, kept to be built on the snapshot's box, and the rule of
+// the geometryWall block.
+struct GeometryWallSettings {
+    std::shared_ptr<const Dictionary> geometry;  // null: the case has no geometry block
+    std::string caseDir = ".";                   // the geometry's files are relative to it
+    ReflectionRule rule = ReflectionRule::bounceBack;
+    double layer = 0.0;  // bounceLayer: alpha x cutoff
+};
+
 struct DpdModel {
     int dimension = 3;
     double kT = 1.0;
@@ -56,6 +69,7 @@ struct DpdModel {
     IntegratorSettings integrator;
     BodyForce bodyForce;
     WallSet walls;
+    GeometryWallSettings geometryWall;
     StabilitySettings stability;
     std::vector<std::string> pairNotes;  // pairs whose coefficients were mixed, for the log
 };

@@ -80,7 +80,7 @@ MonitorReport monitor(const System& sys, int flowAxis) {
         const double fromCentre =
             flowAxis < 0 ? 0.0 : coordinateAlong(p, flowAxis, i) - sys.box.lo[flowAxis] - (s + 0.5) * slabWidth;
         slabs[s].add(fromCentre, Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]));
-        if (sys.walls.isInsideSolid(p.rx[i], p.ry[i], p.rz[i])) ++r.insideWalls;
+        if (sys.isInsideSolid(p.rx[i], p.ry[i], p.rz[i])) ++r.insideWalls;
     }
     double twiceKinetic = 0.0;
     long degreesOfFreedom = 0;

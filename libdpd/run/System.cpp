@@ -63,6 +63,7 @@ void System::initialise() {
         }
     frozenPerWall_ = walls.assignFrozenVelocities(particles, frozenOfSpecies_);
     wrapPositions();
+    if (geometryWall) geometryWall->recordPositions(particles, frozenOfSpecies_);
     initialised_ = true;
 }
 
@@ -95,15 +96,33 @@ void System::computeForces() {
 }
 
 WallCounters System::applyWalls() {
-    if (walls.empty()) return {};
+    if (walls.empty() && !geometryWall) return {};
     const ScopedTimer timer(stepTimes ? &stepTimes->walls : nullptr);
-    return walls.reflect(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
-                         forceParameters.kT, deferredBounces_);
+    WallCounters counts;
+    if (!walls.empty())
+        counts = walls.reflect(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
+                               forceParameters.kT, deferredBounces_);
+    if (geometryWall) {
+        const GeometryWallCounts g = geometryWall->reflect(particles, frozenOfSpecies_, box, random_,
+                                                           static_cast<std::uint64_t>(step), forceParameters.kT);
+        counts.reflected.resize(walls.size(), 0);
+        counts.crossed.resize(walls.size(), 0);
+        counts.reflected.push_back(g.returned);
+        counts.crossed.push_back(g.crossed);
+        counts.insideAfter += g.insideAfter;
+    }
+    return counts;
 }
 
 void System::completeWalls() {
     walls.completeBounceForward(particles, box, deferredBounces_);
     deferredBounces_.clear();
+    // The geometry wall follows each particle's path through the next step from here.
+    if (geometryWall) geometryWall->recordPositions(particles, frozenOfSpecies_);
+}
+
+bool System::isInsideSolid(double x, double y, double z) const {
+    return walls.isInsideSolid(x, y, z) || (geometryWall && geometryWall->isInsideSolid(x, y, z));
 }
 
 std::size_t System::countMobile() const {

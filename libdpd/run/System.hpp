@@ -8,9 +8,11 @@
 #include "forces/DpdPairForce.hpp"
 #include "neighbour/CellList.hpp"
 #include "random/PairRandom.hpp"
+#include "walls/GeometryWall.hpp"
 #include "walls/WallSet.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace dpd {
@@ -36,6 +38,9 @@ public:
     std::uint64_t seed = 1;
     BodyForce bodyForce;
     WallSet walls;
+    // A wall of any shape (the case's geometry block), acting after the planar walls; null without
+    // one, and then it costs nothing.
+    std::shared_ptr<GeometryWall> geometryWall;
     std::int64_t step = 0;
     double time = 0.0;
     StepTimes* stepTimes = nullptr;  // when set, the methods below add their times to it
@@ -62,7 +67,10 @@ public:
     // numbers) plus the body force, plus the forces of tunable-slip walls when there are any. Requires sortByCell() since the last move.
     void computeForces();
     // Reflects fluid particles that crossed a wall during the last move (call before wrapPositions).
+    // The geometry wall's counts, if there is one, come last in the per-wall lists.
     WallCounters applyWalls();
+    // True if the point is inside the solid of a planar wall or of the geometry wall.
+    bool isInsideSolid(double x, double y, double z) const;
     // Finishes what the walls left for the end of the step (bounce-forward crossings: mirrored and
     // reversed with the velocity the step gave them). Every integrator calls it once the velocities
     // of the step are complete.

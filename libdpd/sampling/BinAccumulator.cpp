@@ -11,25 +11,37 @@ int BinLayout::binOf(double x) const {
     return b < nBins ? b : nBins - 1;
 }
 
+int BinLayout::binOf2(double x) const {
+    if (x < lo2 || x >= hi2) return -1;
+    const int b = static_cast<int>((x - lo2) / width2());
+    return b < nBins2 ? b : nBins2 - 1;
+}
+
 BinAccumulator::BinAccumulator(const BinLayout& layout, std::vector<std::uint8_t> speciesMask, long blockSamples)
     : layout_(layout), speciesMask_(std::move(speciesMask)), blockSamples_(blockSamples) {
     if (layout.nBins < 1) throw std::invalid_argument("nBins must be at least 1");
     if (!(layout.hi > layout.lo)) throw std::invalid_argument("the bin range must have hi > lo");
+    if (layout.twoAxes() && (layout.nBins2 < 1 || !(layout.hi2 > layout.lo2) || layout.axis2 == layout.axis))
+        throw std::invalid_argument("the second bin axis needs nBins2 >= 1, hi2 > lo2 and an axis of its own");
     if (blockSamples < 1) throw std::invalid_argument("a block must hold at least one sample");
 }
 
 void BinAccumulator::sample(const Particles& p) {
     if (blocks_.empty() || samplesPerBlock_.back() == blockSamples_) {
-        blocks_.emplace_back(layout_.nBins);
+        blocks_.emplace_back(layout_.binCount());
         samplesPerBlock_.push_back(0);
     }
     std::vector<BinSums>& block = blocks_.back();
-    const std::vector<double>& r = layout_.axis == 0 ? p.rx : (layout_.axis == 1 ? p.ry : p.rz);
+    const auto coordinates = [&p](int axis) -> const std::vector<double>& { return axis == 0 ? p.rx : (axis == 1 ? p.ry : p.rz); };
+    const std::vector<double>& r = coordinates(layout_.axis);
+    const std::vector<double>& r2 = coordinates(layout_.twoAxes() ? layout_.axis2 : layout_.axis);
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (!speciesMask_[p.species[i]]) continue;
         const int b = layout_.binOf(r[i]);
         if (b < 0) continue;
-        block[b].add(r[i] - layout_.centre(b), p.vx[i], p.vy[i], p.vz[i]);
+        const int j = layout_.twoAxes() ? layout_.binOf2(r2[i]) : 0;
+        if (j < 0) continue;
+        block[b + layout_.nBins * j].add(r[i] - layout_.centre(b), p.vx[i], p.vy[i], p.vz[i]);
     }
     ++samplesPerBlock_.back();
     ++samples_;

@@ -50,14 +50,26 @@ inline int tensorIndex(int a, int b) {
     return lo == 0 ? (hi == 1 ? 3 : 4) : 5;
 }
 
+// Bins along one axis, or on a 2-D grid of two axes: then bin (i, j) -- i along `axis`, j along
+// `axis2` -- is number i + nBins j, and the offsets x of the temperature's shear correction are
+// along the first axis.
 struct BinLayout {
     int axis = 2;
     int nBins = 1;
     double lo = 0.0, hi = 1.0;
+    int axis2 = -1;  // -1: bins along `axis` only
+    int nBins2 = 1;
+    double lo2 = 0.0, hi2 = 1.0;
     double width() const { return (hi - lo) / nBins; }
     double centre(int b) const { return lo + (b + 0.5) * width(); }
-    // Bin index, or -1 outside [lo, hi).
+    bool twoAxes() const { return axis2 >= 0; }
+    int binCount() const { return nBins * (twoAxes() ? nBins2 : 1); }
+    double width2() const { return twoAxes() ? (hi2 - lo2) / nBins2 : 1.0; }
+    double centre2(int j) const { return lo2 + (j + 0.5) * width2(); }
+    // Bin index along the first axis, or -1 outside [lo, hi).
     int binOf(double coordinate) const;
+    // Bin index along the second axis, or -1 outside [lo2, hi2).
+    int binOf2(double coordinate) const;
 };
 
 class BinAccumulator {
@@ -67,7 +79,7 @@ public:
 
     // Adds one sample of the particles whose species is in the mask.
     void sample(const Particles& p);
-    // Adds the pair virial per bin (nBins tensors) to the sample just taken.
+    // Adds the pair virial per bin (binCount() tensors) to the sample just taken.
     void addVirial(const std::vector<SymmetricTensor>& virial);
     // The flow axis of the shear stress reported, or -1 when no stress is sampled.
     int stressFlowAxis() const { return stressFlowAxis_; }
@@ -75,7 +87,7 @@ public:
     const BinLayout& layout() const { return layout_; }
     long samples() const { return samples_; }
     long blockSamples() const { return blockSamples_; }
-    // Completed blocks, then the one in progress (if it has samples), each nBins x kFields.
+    // Completed blocks, then the one in progress (if it has samples), each binCount() x kFields.
     const std::vector<std::vector<BinSums>>& blocks() const { return blocks_; }
     const std::vector<long>& samplesPerBlock() const { return samplesPerBlock_; }
     const std::vector<std::uint8_t>& speciesMask() const { return speciesMask_; }

@@ -7,10 +7,11 @@
 
 namespace dpd {
 
-void writeBins(const std::string& file, const BinAccumulator& acc, int dimension, double crossSection, double time) {
+void writeBins(const std::string& file, const BinAccumulator& acc, int dimension, double crossSection, double time,
+               const std::vector<double>& sections) {
     std::filesystem::create_directories(std::filesystem::path(file).parent_path());
     const auto& blocks = acc.blocks();
-    const int nBins = acc.layout().nBins;
+    const int nBins = acc.layout().binCount();
     std::vector<double> flat;
     flat.reserve(blocks.size() * nBins * BinSums::kFields);
     for (const auto& block : blocks)
@@ -24,9 +25,16 @@ void writeBins(const std::string& file, const BinAccumulator& acc, int dimension
     w.writeAttribute("/", "format", "dpdFoamLike-bins-2");
     w.writeAttribute("/", "stressFlowAxis", acc.stressFlowAxis());
     w.writeAttribute("/", "axis", acc.layout().axis);
-    w.writeAttribute("/", "nBins", nBins);
+    w.writeAttribute("/", "nBins", acc.layout().nBins);
     w.writeAttribute("/", "lo", acc.layout().lo);
     w.writeAttribute("/", "hi", acc.layout().hi);
+    if (acc.layout().twoAxes()) {  // a 2-D grid of bins; 1-D files stay as they were
+        w.writeAttribute("/", "axis2", acc.layout().axis2);
+        w.writeAttribute("/", "nBins2", acc.layout().nBins2);
+        w.writeAttribute("/", "lo2", acc.layout().lo2);
+        w.writeAttribute("/", "hi2", acc.layout().hi2);
+    }
+    if (!sections.empty()) w.writeAttribute("/", "sections", sections);
     w.writeAttribute("/", "blockSamples", static_cast<std::int64_t>(acc.blockSamples()));
     w.writeAttribute("/", "dimension", dimension);
     w.writeAttribute("/", "crossSection", crossSection);
@@ -47,13 +55,19 @@ StoredBins readBins(const std::string& file) {
     layout.nBins = static_cast<int>(r.attributeInt("/", "nBins"));
     layout.lo = r.attributeDouble("/", "lo");
     layout.hi = r.attributeDouble("/", "hi");
+    if (r.hasAttribute("/", "axis2")) {
+        layout.axis2 = static_cast<int>(r.attributeInt("/", "axis2"));
+        layout.nBins2 = static_cast<int>(r.attributeInt("/", "nBins2"));
+        layout.lo2 = r.attributeDouble("/", "lo2");
+        layout.hi2 = r.attributeDouble("/", "hi2");
+    }
     std::vector<hsize_t> dims;
     const std::vector<double> flat = r.readDoubles("blocks", &dims);
     const std::vector<std::int64_t> perBlock = r.readInt64("samplesPerBlock");
-    if (dims.size() != 3 || dims[1] != static_cast<hsize_t>(layout.nBins) || dims[2] != fields ||
+    if (dims.size() != 3 || dims[1] != static_cast<hsize_t>(layout.binCount()) || dims[2] != fields ||
         perBlock.size() != dims[0])
         throw IoError(file + ": dataset 'blocks' does not have the shape (nBlocks, nBins, " + std::to_string(fields) + ")");
-    std::vector<std::vector<BinSums>> blocks(dims[0], std::vector<BinSums>(layout.nBins));
+    std::vector<std::vector<BinSums>> blocks(dims[0], std::vector<BinSums>(layout.binCount()));
     std::size_t k = 0;
     for (auto& block : blocks)
         for (BinSums& b : block)
@@ -68,6 +82,7 @@ StoredBins readBins(const std::string& file) {
     out.dimension = static_cast<int>(r.attributeInt("/", "dimension"));
     out.crossSection = r.attributeDouble("/", "crossSection");
     out.time = r.attributeDouble("/", "time");
+    if (r.hasAttribute("/", "sections")) out.sections = r.attributeDoubles("/", "sections");
     return out;
 }
 

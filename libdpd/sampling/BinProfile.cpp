@@ -95,7 +95,7 @@ std::string shearStressName(int flowAxis, int binAxis) {
 
 BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int dimension) {
     const BinLayout& L = acc.layout();
-    const double binMeasure = L.width() * crossSection;
+    const double binMeasure = L.width() * L.width2() * crossSection;
     const int flowAxis = acc.stressFlowAxis();
     BinProfile out;
     out.samples = acc.samples();
@@ -106,7 +106,7 @@ BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int di
     for (std::size_t k = 0; k < acc.blocks().size(); ++k)
         if (acc.samplesPerBlock()[k] == acc.blockSamples()) complete.push_back(k);
     out.blocksForErrors = complete.size() >= 2 ? static_cast<int>(complete.size()) : 0;
-    for (int b = 0; b < L.nBins; ++b) {
+    for (int b = 0; b < L.binCount(); ++b) {
         BinSums total;
         for (const auto& block : acc.blocks())
             for (int f = 0; f < BinSums::kFields; ++f) total.s[f] += block[b].s[f];
@@ -119,7 +119,8 @@ BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int di
                 if (!ek.valid) continue;
                 ux.push_back(ek.ux); uy.push_back(ek.uy); uz.push_back(ek.uz); kT.push_back(ek.kT);
             }
-        out.centre.push_back(L.centre(b));
+        out.centre.push_back(L.centre(b % L.nBins));
+        if (L.twoAxes()) out.centre2.push_back(L.centre2(b / L.nBins));
         out.count.push_back(total.s[0]);
         out.density.push_back(e.density);
         out.densityErr.push_back(standardErrorOfMean(rho));

@@ -24,8 +24,11 @@ struct StressPoint {
     double pressure = 0.0, pressureErr = 0.0;
 };
 
+// One entry per bin; for a 2-D grid of bins, bin (i, j) is entry i + nBins j and centre2 holds the
+// bin centres along the second axis.
 struct BinProfile {
     std::vector<double> centre;
+    std::vector<double> centre2;  // empty for bins along one axis
     std::vector<double> density, densityErr;
     std::vector<double> ux, uy, uz, uxErr, uyErr, uzErr;
     std::vector<double> kT, kTErr;
@@ -41,7 +44,9 @@ struct BinProfile {
 std::string shearStressName(int flowAxis, int binAxis);
 
 // crossSection: the measure of a bin's face (volume / length along the axis; area / length in 2-D),
-// so that density = count / (samples x width x crossSection). `dimension` sets which velocity
+// so that density = count / (samples x width x crossSection); for a 2-D grid of bins, the box's
+// extent along the remaining axis (volume / (length1 x length2); 1 in a 2-D scene), and the bin
+// measure is width x width2 x crossSection. `dimension` sets which velocity
 // components count in the temperature (x and z in 2-D).
 BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int dimension);
 

@@ -3,6 +3,7 @@
 #include "io/Dictionary.hpp"
 #include "run/System.hpp"
 #include "sampling/BinAccumulatorFile.hpp"
+#include "sampling/BinLayoutDictionary.hpp"
 #include "sampling/PairVirial.hpp"
 
 #include <cmath>
@@ -35,28 +36,26 @@ std::vector<std::uint8_t> readSpeciesMask(const Dictionary& d, const System& sys
 }
 
 BinnedProfileFunction readBinnedProfile(const Dictionary& d, const std::string& name, const System& sys) {
-    d.checkKeys({"type", "axis", "nBins", "min", "max", "species", "startTime", "sampleInterval", "samplesPerBlock",
-                 "stress", "flowAxis"});
-    BinLayout layout;
-    layout.axis = readAxis(d, sys);
-    layout.nBins = d.getPositive<int>("nBins");
-    layout.lo = d.getOrDefault<double>("min", sys.box.lo[layout.axis]);
-    layout.hi = d.getOrDefault<double>("max", sys.box.hi[layout.axis]);
-    if (!(layout.hi > layout.lo)) d.fail("max", "must be greater than min");
+    std::vector<std::string> keys = binLayoutKeys();
+    keys.insert(keys.end(), {"type", "species", "startTime", "sampleInterval", "samplesPerBlock", "stress", "flowAxis"});
+    d.checkKeys(keys);
+    const BinLayout layout = readBinLayout(d, sys.box);
     BinnedProfileFunction f;
     f.name = name;
     f.startTime = d.getOrDefault<double>("startTime", 0.0);
     f.sampleInterval = d.found("sampleInterval") ? d.getPositive<long>("sampleInterval") : 1;
     const long perBlock = d.found("samplesPerBlock") ? d.getPositive<long>("samplesPerBlock") : 1000;
     f.accumulator = BinAccumulator(layout, readSpeciesMask(d, sys), perBlock);
+    f.sections = readSections(d, layout);
     if (d.getOrDefault<bool>("stress", false)) {
+        if (layout.twoAxes()) d.fail("stress", "the stress is sampled on bins along one axis only");
         const int flow = readAxis(d, sys, "flowAxis");
         if (flow == layout.axis) d.fail("flowAxis", "the flow axis must differ from the bin axis (the shear stress is sigma_flow,axis)");
         f.accumulator.setStressFlowAxis(flow);
     } else if (d.found("flowAxis")) {
         d.fail("flowAxis", "only with stress yes");
     }
-    f.crossSection = sys.box.volume() / sys.box.length()[layout.axis];
+    f.crossSection = binCrossSection(layout, sys.box);
     return f;
 }
 
@@ -87,7 +86,7 @@ void FunctionObjects::write(const std::string& timeDir, const System& sys) const
     for (const auto& f : profiles_) {
         if (f.accumulator.samples() == 0) continue;
         const std::string file = (std::filesystem::path(timeDir) / "sampling" / (f.name + ".h5")).string();
-        writeBins(file, f.accumulator, sys.box.dimension, f.crossSection, sys.time);
+        writeBins(file, f.accumulator, sys.box.dimension, f.crossSection, sys.time, f.sections);
     }
 }
 

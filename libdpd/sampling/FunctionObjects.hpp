@@ -17,6 +17,10 @@
 //       flowAxis        x;          // + virial) and the pressure (costs one pair traversal per sample)
 //   }
 //
+// or on a 2-D grid of bins (no stress), with optional 1-D sections (sampling/BinLayoutDictionary.hpp):
+//
+//       axes (x z); nBins (160 80); min (-30 -15); max (30 15); sections (-25.5 0 25.5);
+//
 // At every write time the sums go to <time>/sampling/<name>.h5 (see BinAccumulatorFile.hpp), which
 // profileBins turns into profiles.
 #include "sampling/BinAccumulator.hpp"
@@ -35,6 +39,7 @@ struct BinnedProfileFunction {
     double startTime = 0.0;
     long sampleInterval = 1;
     double crossSection = 1.0;
+    std::vector<double> sections;  // 2-D grids: where profileBins cuts 1-D profiles
 };
 
 class FunctionObjects {

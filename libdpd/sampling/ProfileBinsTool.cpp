@@ -5,6 +5,8 @@
 #include "io/Dictionary.hpp"
 #include "io/Snapshot.hpp"
 #include "io/TimeDirectories.hpp"
+#include "sampling/BinLayoutDictionary.hpp"
+#include "sampling/ProfileGrid.hpp"
 #include "sampling/ProfileTable.hpp"
 
 #include <algorithm>
@@ -19,8 +21,6 @@ namespace dpd {
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* axisName(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
 
 // Bins whose centre is farther than margin from both ends; all bins when none is.
 std::vector<std::size_t> centralBins(const BinProfile& p, double lo, double hi, double margin) {
@@ -122,16 +122,10 @@ ProfileSummary summariseBins(const StoredBins& bins, double margin) {
 }
 
 BinAccumulator snapshotAccumulator(const Dictionary& d, const Snapshot& snap) {
-    d.checkKeys({"axis", "nBins", "min", "max", "species"});
-    BinLayout layout;
-    const std::string axis = d.get<std::string>("axis");
-    layout.axis = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
-    if (layout.axis < 0) d.fail("axis", "expected x, y or z, not '" + axis + "'");
-    if (!snap.box.isActiveAxis(layout.axis)) d.fail("axis", "a 2-D scene lies in the x-z plane: there is no y axis");
-    layout.nBins = d.getPositive<int>("nBins");
-    layout.lo = d.getOrDefault<double>("min", snap.box.lo[layout.axis]);
-    layout.hi = d.getOrDefault<double>("max", snap.box.hi[layout.axis]);
-    if (!(layout.hi > layout.lo)) d.fail(d.found("max") ? "max" : "min", "max must be greater than min");
+    std::vector<std::string> keys = binLayoutKeys();
+    keys.push_back("species");
+    d.checkKeys(keys);
+    const BinLayout layout = readBinLayout(d, snap.box);
 
     const std::size_t nSpecies = snap.speciesNames.size();
     std::vector<std::uint8_t> mask(nSpecies, 0);
@@ -155,8 +149,7 @@ BinAccumulator snapshotAccumulator(const Dictionary& d, const Snapshot& snap) {
 BinProfile binSnapshot(const Dictionary& d, const Snapshot& snap, BinLayout* layoutOut) {
     BinAccumulator acc = snapshotAccumulator(d, snap);
     acc.sample(snap.particles);
-    const int axis = acc.layout().axis;
-    const double crossSection = snap.box.volume() / snap.box.length()[axis];
+    const double crossSection = binCrossSection(acc.layout(), snap.box);
     if (layoutOut) *layoutOut = acc.layout();
     return computeProfile(acc, crossSection, snap.box.dimension);
 }
@@ -178,7 +171,9 @@ std::vector<ProfileBinsItem> computeProfileBins(const ProfileBinsOptions& o, std
             item.profile = binSnapshot(dict, snap, &layout);
             item.time = t.name;
             item.name = "snapshot";
-            item.axisName = axisName(layout.axis);
+            item.axisName = axisLetter(layout.axis);
+            item.layout = layout;
+            item.sections = readSections(dict, layout);
             item.source = file;
             item.output = (outRoot / t.name / "snapshot.dat").string();
             item.summary = summariseProfile(item.profile, layout.lo, layout.hi, o.margin);
@@ -208,7 +203,9 @@ std::vector<ProfileBinsItem> computeProfileBins(const ProfileBinsOptions& o, std
             ProfileBinsItem item;
             item.time = t.name;
             item.name = fs::path(file).stem().string();
-            item.axisName = axisName(bins.accumulator.layout().axis);
+            item.axisName = axisLetter(bins.accumulator.layout().axis);
+            item.layout = bins.accumulator.layout();
+            item.sections = bins.sections;
             item.source = file;
             item.output = (outRoot / t.name / (item.name + ".dat")).string();
             item.profile = computeProfile(bins.accumulator, bins.crossSection, bins.dimension);
@@ -229,7 +226,18 @@ std::vector<ProfileBinsItem> computeProfileBins(const ProfileBinsOptions& o, std
 }
 
 void writeProfileBins(const std::vector<ProfileBinsItem>& items) {
-    for (const auto& item : items) writeProfileTable(item.output, item.axisName, item.profile);
+    for (const auto& item : items) {
+        if (!item.layout.twoAxes()) {
+            writeProfileTable(item.output, item.axisName, item.profile);
+            continue;
+        }
+        writeProfileTable(item.output, item.axisName, item.profile, axisLetter(item.layout.axis2));
+        const fs::path dir = fs::path(item.output).parent_path();
+        writeProfileImage((dir / (item.name + ".vti")).string(), item.layout, item.profile);
+        for (const double x : item.sections)
+            writeProfileTable((dir / sectionFileName(item.name, item.layout, x)).string(), axisLetter(item.layout.axis2),
+                              profileSection(item.layout, item.profile, x));
+    }
 }
 
 void printProfileBins(std::ostream& out, const std::vector<ProfileBinsItem>& items, const std::string& caseDir) {
@@ -239,13 +247,20 @@ void printProfileBins(std::ostream& out, const std::vector<ProfileBinsItem>& ite
         lastTime = item.time;
         const ProfileSummary& s = item.summary;
         const bool errors = s.blocksForErrors >= 2;
-        out << "    " << item.name << ": " << item.profile.centre.size() << " bins along " << item.axisName << ", "
+        out << "    " << item.name << ": ";
+        if (item.layout.twoAxes())
+            out << item.layout.nBins << " x " << item.layout.nBins2 << " bins on " << item.axisName << "-"
+                << axisLetter(item.layout.axis2) << ", ";
+        else out << item.profile.centre.size() << " bins along " << item.axisName << ", ";
+        out
             << s.samples << (s.samples == 1 ? " sample, " : " samples, ");
         if (errors) out << s.blocksForErrors << " blocks for the errors\n";
         else out << "no error bars (fewer than 2 complete blocks)\n";
         out << "        central " << s.binsUsed << " bins: density " << withError(s.density, s.densityErr, errors)
             << ", kT " << withError(s.kT, s.kTErr, errors) << "\n";
-        out << "        written " << relativeToCase(item.output, caseDir) << "\n";
+        out << "        written " << relativeToCase(item.output, caseDir)
+            << (item.layout.twoAxes() ? " and " + item.name + ".vti beside it, " + std::to_string(item.sections.size()) + " section(s)" : "")
+            << "\n";
     }
 }
 

@@ -11,6 +11,10 @@
 //   species  (fluid);    // optional, default: every species that is not frozen
 //
 // and writes postProcessing/profileBins/<time>/snapshot.dat (one sample, so the error columns are 0).
+// Instead of axis, `axes (x z); nBins (160 80);` bins on a 2-D grid (sampling/BinLayoutDictionary.hpp),
+// from the solver's 2-D sampling files as from snapshots: the table then has both axes as its first
+// two columns, <name>.vti holds the same fields as VTK image data for ParaView (ProfileGrid.hpp), and
+// each of `sections (...)` gives a 1-D table <name>_<axis><position>.dat along the second axis.
 //
 // Every profile of every selected time is computed before anything is written, so an error leaves
 // the case as it was.
@@ -65,6 +69,8 @@ struct ProfileBinsItem {
     std::string axisName;   // x, y or z
     std::string source;     // the file read
     std::string output;     // the table to write, <case>/postProcessing/profileBins/<time>/<name>.dat
+    BinLayout layout;       // a 2-D grid also writes <name>.vti and one <name>_<axis><position>.dat per section
+    std::vector<double> sections;
     BinProfile profile;
     ProfileSummary summary;
 };

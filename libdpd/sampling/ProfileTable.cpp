@@ -74,8 +74,12 @@ std::vector<std::string> stressTableColumns(const std::string& stressName) {
             stressName + "Virial", stressName + "VirialErr", "pressure",           "pressureErr"};
 }
 
-void writeProfileTable(const std::string& path, const std::string& axisName, const BinProfile& p) {
+void writeProfileTable(const std::string& path, const std::string& axisName, const BinProfile& p,
+                       const std::string& axis2Name) {
     const std::size_t n = p.centre.size();
+    const bool grid = !p.centre2.empty();
+    if (grid && (p.centre2.size() != n || axis2Name.empty()))
+        throw std::invalid_argument("writeProfileTable: a 2-D grid needs one centre2 per bin and the second axis' name");
     for (const auto* v : {&p.density, &p.densityErr, &p.ux, &p.uxErr, &p.uy, &p.uyErr, &p.uz, &p.uzErr, &p.kT,
                           &p.kTErr, &p.count})
         if (v->size() != n) throw std::invalid_argument("writeProfileTable: the profile's arrays differ in length");
@@ -83,6 +87,7 @@ void writeProfileTable(const std::string& path, const std::string& axisName, con
         throw std::invalid_argument("writeProfileTable: the profile's stress has the wrong length");
 
     std::vector<std::string> names = profileTableColumns(axisName);
+    if (grid) names.insert(names.begin() + 1, axis2Name);
     if (p.hasStress)
         for (const std::string& name : stressTableColumns(p.stressName)) names.push_back(name);
     std::string text = "#";
@@ -91,6 +96,7 @@ void writeProfileTable(const std::string& path, const std::string& axisName, con
     for (std::size_t i = 0; i < n; ++i) {
         std::vector<double> row = {p.centre[i], p.density[i], p.densityErr[i], p.ux[i], p.uxErr[i], p.uy[i],
                                    p.uyErr[i],  p.uz[i],      p.uzErr[i],      p.kT[i], p.kTErr[i], p.count[i]};
+        if (grid) row.insert(row.begin() + 1, p.centre2[i]);
         if (p.hasStress) {
             const StressPoint& s = p.stress[i];
             row.insert(row.end(), {s.shear, s.shearErr, s.shearKinetic, s.shearKineticErr, s.shearVirial,

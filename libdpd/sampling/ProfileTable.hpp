@@ -37,7 +37,10 @@ std::vector<std::string> stressTableColumns(const std::string& stressName);
 // Writes the profile atomically (temporary file in the same directory, then rename); creates the
 // parent directory if needed. IoError when it cannot write; std::invalid_argument when the profile's
 // arrays differ in length.
-void writeProfileTable(const std::string& path, const std::string& axisName, const BinProfile& profile);
+// A 2-D grid of bins (profile.centre2 set) gets the second axis as the second column (axis2Name),
+// one row per bin, the first axis running fastest.
+void writeProfileTable(const std::string& path, const std::string& axisName, const BinProfile& profile,
+                       const std::string& axis2Name = "");
 
 // Reads any table in this format (any column names). IoError naming the file when it cannot be read,
 // has no header, repeats a column name or has no rows; IoError naming the file and the line for a row

@@ -1,5 +1,7 @@
 #include "walls/WallSet.hpp"
 
+#include "walls/WallVelocityRules.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -28,32 +30,6 @@ Eigen::Vector3d mirrored(const PlanarWall& w, const Particles& p, std::size_t i,
     return Eigen::Vector3d(p.rx[i], p.ry[i], p.rz[i]) - 2.0 * depth * w.normal;
 }
 
-// The speed, along the normal, of a particle a wall at temperature kT emits: flux-weighted
-// (Rayleigh) p(v) = v/kT exp(-v^2 / 2kT), drawn by inverting its distribution function.
-double emittedNormalSpeed(const PairRandom& random, std::uint64_t step, std::uint64_t id, double kT) {
-    const auto u = random.particleUniforms(step, id, kStreamReflection + 16);
-    return std::sqrt(kT) * std::sqrt(-2.0 * std::log(u[0]));
-}
-
-// New velocity, relative to the wall, for a particle returned by a Maxwellian (diffuse) wall: the
-// tangential components are Gaussian at the wall temperature, the normal one is what the wall emits.
-Eigen::Vector3d diffuseVelocity(const PlanarWall& w, const Box& box, const PairRandom& random, std::uint64_t step,
-                                std::uint64_t id, double kT) {
-    const auto g = random.particleGaussians(step, id, kStreamReflection);
-    const double s = std::sqrt(kT);
-    Eigen::Vector3d v(s * g[0], box.isActiveAxis(1) ? s * g[1] : 0.0, s * g[2]);
-    v -= v.dot(w.normal) * w.normal;  // tangential part only
-    return v + emittedNormalSpeed(random, step, id, kT) * w.normal;
-}
-
-// Bounce layer (METHODS.md 3.2 step 6): the tangential velocity relative to the wall is reversed and
-// the normal one is replaced by a speed the wall emits at its temperature, pointing into the fluid.
-Eigen::Vector3d turnedRound(const PlanarWall& w, const Eigen::Vector3d& relative, const PairRandom& random,
-                            std::uint64_t step, std::uint64_t id, double kT) {
-    const Eigen::Vector3d tangential = relative - relative.dot(w.normal) * w.normal;
-    return -tangential + emittedNormalSpeed(random, step, id, kT) * w.normal;
-}
-
 // The rules that act at the plane, for a particle found `depth` (< 0) behind it.
 void reflectAtPlane(const PlanarWall& w, double depth, Particles& p, std::size_t i, const Box& box,
                     const PairRandom& random, std::uint64_t step, double kT) {
@@ -62,8 +38,8 @@ void reflectAtPlane(const PlanarWall& w, double depth, Particles& p, std::size_t
     switch (w.rule) {
         case ReflectionRule::specular: v -= 2.0 * v.dot(w.normal) * w.normal; break;
         case ReflectionRule::bounceBack: v = -v; break;
-        case ReflectionRule::maxwellian: v = diffuseVelocity(w, box, random, step, p.id[i], kT); break;
-        case ReflectionRule::bounceLayer: v = turnedRound(w, v, random, step, p.id[i], kT); break;
+        case ReflectionRule::maxwellian: v = diffuseVelocity(w.normal, box, random, step, p.id[i], kT, kStreamReflection); break;
+        case ReflectionRule::bounceLayer: v = turnedRound(w.normal, v, random, step, p.id[i], kT, kStreamReflection); break;
         case ReflectionRule::none:
         case ReflectionRule::bounceForward: break;  // bounceForward is finished after the step
     }
@@ -91,7 +67,7 @@ RuleCounts applyBounceLayer(const PlanarWall& w, Particles& p, const std::vector
             continue;  // in the layer but already leaving it
         } else {
             const std::size_t k = static_cast<std::size_t>(i);
-            setVelocity(p, k, turnedRound(w, velocityOf(p, k) - w.velocity, random, step, p.id[k], kT) + w.velocity);
+            setVelocity(p, k, turnedRound(w.normal, velocityOf(p, k) - w.velocity, random, step, p.id[k], kT, kStreamReflection) + w.velocity);
             ++reflected;
             continue;
         }

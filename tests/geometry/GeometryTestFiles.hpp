@@ -2,6 +2,7 @@
 // Files the geometry tests write for themselves: grey images as PGM (text), PNG and TIFF written
 // byte by byte here (uncompressed, rows from the top as both formats define), so that the readers
 // are checked against the formats themselves and not against VTK's own writers; gmsh .geo text.
+#include "core/Box.hpp"
 #include "core/Error.hpp"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,15 @@
 namespace geometryTest {
 
 namespace fs = std::filesystem;
+
+// A 2-D box (the x-z plane) from the origin to (lx, lz).
+inline dpd::Box box2d(double lx, double lz) {
+    dpd::Box b;
+    b.dimension = 2;
+    b.lo = Eigen::Vector3d(0, -0.5, 0);
+    b.hi = Eigen::Vector3d(lx, 0.5, lz);
+    return b;
+}
 
 // rows[0] is the top row of the picture; grey levels 0..255.
 using Picture = std::vector<std::vector<int>>;

@@ -17,14 +17,6 @@ using namespace geometryTest;
 
 namespace {
 
-Box box2d(double lx, double lz) {
-    Box b;
-    b.dimension = 2;
-    b.lo = Eigen::Vector3d(0, -0.5, 0);
-    b.hi = Eigen::Vector3d(lx, 0.5, lz);
-    return b;
-}
-
 Dictionary maskDict(const std::string& file, const std::string& extra) {
     return Dictionary::parse("type imageMask; file \"" + file + "\"; " + extra, "geometryDict");
 }
@@ -172,11 +164,13 @@ TEST_F(ImageMask, DiscGivesTheAnalyticSignedDistanceAndNormal) {
     EXPECT_GT(checked, 1000);
     EXPECT_LT(worstExact, exactTolerance);
     EXPECT_LT(worstField, fieldTolerance);
-    // Normal: the direction to the nearest contour point. The contour wiggles about the circle on the
-    // pixel scale (by up to the distance error above), which tilts it: measured worst 13.5 degrees
-    // within 0.3 of the surface (10-14 degrees across the band) for R = 30 pixels. No bound is
-    // derived for this; 15 degrees guards the measured figure against regressions.
-    EXPECT_LT(worstAngle, 15.0 * M_PI / 180.0);
+    // Normal: the direction to the nearest contour point wiggles with the contour about the circle
+    // on the pixel scale (measured worst 13.5 degrees within 0.3 of the surface); the field's normal
+    // is the central-difference gradient of the distance over two cells (2h = 5 pixels here), which
+    // averages those wiggles out: measured worst 3.4 degrees within 0.3 of the surface, 4.3 across
+    // the fluid side of the band. No bound is derived; 5 degrees (the target of the smoothing)
+    // guards the measured figure against regressions.
+    EXPECT_LT(worstAngle, 5.0 * M_PI / 180.0);
     for (int b = 0; b < 10; ++b) std::printf("phi %.1f..%.1f worst angle %.1f deg\n", -2 + 0.4 * b, -1.6 + 0.4 * b, angles[b] * 180 / M_PI);
     std::printf("disc: worst distance error exact %.4f field %.4f (p = %.2f, h = %.3f); worst normal error %.2f deg\n",
                 worstExact, worstField, p, h, worstAngle * 180 / M_PI);

@@ -1,0 +1,14 @@
+// Square contraction (METHODS.md scene 7): a channel 60 long and 30 wide, narrowed in the middle
+// by a square step to 15 over a length of 15. gmsh's x-y plane is the box's x-z plane
+// (extrudeAxis y in constant/dpdProperties); the fluid is the surface of the group "fluid".
+L = 30;  H = 15;  c = 7.5;  h = 7.5;
+Point(1) = {-L, -H, 0};  Point(2) = {-c, -H, 0};  Point(3) = {-c, -h, 0};  Point(4) = {c, -h, 0};
+Point(5) = {c, -H, 0};   Point(6) = {L, -H, 0};   Point(7) = {L, H, 0};    Point(8) = {c, H, 0};
+Point(9) = {c, h, 0};    Point(10) = {-c, h, 0};  Point(11) = {-c, H, 0};  Point(12) = {-L, H, 0};
+For k In {1:11}
+  Line(k) = {k, k + 1};
+EndFor
+Line(12) = {12, 1};
+Curve Loop(1) = {1:12};
+Plane Surface(1) = {1};
+Physical Surface("fluid") = {1};
