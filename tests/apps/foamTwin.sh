@@ -9,22 +9,13 @@ bin=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$src/tests/shellTestFunctions" || exit 1
 py=/usr/bin/python3
 
 . "$src/etc/RunFunctions" || exit 1
 sourceOpenFOAM || exit 1
 export PATH="$bin:$PATH"
 
-expectError() {
-    local status=$1 log=$2
-    shift 2
-    if [ "$status" -eq 0 ]; then fail "expected a non-zero exit status ($(head -c 300 "$log"))"; return; fi
-    for pattern in "$@"; do
-        grep -q -- "$pattern" "$log" || fail "message lacks '$pattern': $(cat "$log")"
-    done
-}
 
 header='FoamFile { version 2.0; format ascii; class dictionary; }'
 
@@ -164,8 +155,4 @@ sed -i 's/point (0 0 4)/point (0 0 5)/' "$c/constant/dpdProperties"
 expectError $? "$work/log" "no time directory 77"
 [ -e "$c/postProcessing/compareFVM" ] && fail "compareFVM wrote results from bad input"
 
-if [ $failures -gt 0 ]; then
-    echo "$failures failure(s)"
-    exit 1
-fi
-echo "foamTwin: all checks passed"
+finishTests foamTwin

@@ -4,21 +4,11 @@
 #   $1: the directory of the executables, $2: the source directory
 set -u
 bin=$1
+src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
+. "$src/tests/shellTestFunctions" || exit 1
 
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expectError <log> <pattern>... : the last command failed and its output matched every pattern.
-expectError() {
-    local status=$1 log=$2
-    shift 2
-    if [ "$status" -eq 0 ]; then fail "expected a non-zero exit status ($(head -c 300 "$log"))"; return; fi
-    for pattern in "$@"; do
-        grep -q -- "$pattern" "$log" || fail "message lacks '$pattern': $(cat "$log")"
-    done
-}
 
 header='FoamFile { version 2.0; format ascii; class dictionary; }'
 
@@ -128,8 +118,4 @@ else
     fail "dpdFoamLike failed: $(tail -5 "$r/log.dpdFoamLike")"
 fi
 
-if [ "$failures" -ne 0 ]; then
-    echo "$failures failure(s)"
-    exit 1
-fi
-echo "profileBinsErrors: all checks passed"
+finishTests profileBinsErrors
