@@ -1,10 +1,11 @@
 """Reading what the tools write, for the tutorials' plotResults.py scripts.
 
     import sys, os; sys.path.insert(0, os.path.join(os.environ["DPD_PROJECT_DIR"], "etc"))
-    from dpdResults import latest, read_sweep, read_table
+    from dpdResults import latest, read_dict, read_sweep, read_table
 """
 import glob
 import os
+import re
 import sys
 
 import numpy as np
@@ -24,6 +25,24 @@ def read_table(path):
         header = f.readline().lstrip("#").split()
     data = np.loadtxt(path, comments="#", ndmin=2)
     return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def read_dict(path):
+    """The plain `key value;` and `key (a b ...);` entries of a dictionary the tools write (fit.dat,
+    compare.dat): numbers as floats, lists as lists of floats, anything else as a string."""
+    with open(path) as f:
+        text = re.sub(r"FoamFile\s*\{[^}]*\}", "", f.read())
+    out = {}
+    for key, value in re.findall(r"^\s*(\w+)\s+([^;]+);", text, re.M):
+        value = value.strip()
+        try:
+            if value.startswith("("):
+                out[key] = [float(v) for v in value.strip("()").split()]
+            else:
+                out[key] = float(value)
+        except ValueError:
+            out[key] = value
+    return out
 
 
 def read_sweep(path):

@@ -17,24 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from dpdResults import latest, read_table  # noqa: E402
-
-
-def read_dict(path):
-    """Plain `key value;` and `key (a b);` entries of an OpenFOAM dictionary written by the tools."""
-    out = {}
-    with open(path) as f:
-        text = re.sub(r"FoamFile\s*\{[^}]*\}", "", f.read())
-    for key, value in re.findall(r"^\s*(\w+)\s+([^;]+);", text, re.M):
-        value = value.strip()
-        if value.startswith("("):
-            out[key] = [float(v) for v in value.strip("()").split()]
-        else:
-            try:
-                out[key] = float(value)
-            except ValueError:
-                out[key] = value
-    return out
+from dpdResults import latest, read_dict, read_table  # noqa: E402
 
 
 def heating_at_shear(periodic, g, nu):

@@ -21,36 +21,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
+from dpdResults import latest, read_dict, read_table  # noqa: E402
+
 ZC = 1.0  # constant/dpdProperties: tunableSlip zc
-
-
-def newest(pattern):
-    """The file matching pattern in the latest time directory."""
-    found = glob.glob(pattern)
-    if not found:
-        sys.exit(f"plotResults: nothing matches {pattern}")
-    return max(found, key=lambda p: float(os.path.basename(os.path.dirname(p))))
-
-
-def fit_entries(path):
-    """The `key value;` and `key (a b ...);` entries of fit.dat."""
-    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", open(path).read())
-    entries = {}
-    for key, value in re.findall(r"^\s*(\w+)\s+([^;]+);", text, re.M):
-        words = value.strip().strip("()").split()
-        try:
-            numbers = [float(w) for w in words]
-            entries[key] = numbers if value.strip().startswith("(") else numbers[0]
-        except ValueError:
-            entries[key] = value.strip()
-    return entries
-
-
-def profile_columns(path):
-    with open(path) as f:
-        names = f.readline().lstrip("#").split()
-    data = np.loadtxt(path, comments="#")
-    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 def crossings(log):
@@ -84,8 +58,8 @@ def near_wall_density(z, rho, wall, inward):
 
 def case_row(case):
     gamma_l = float(case.split("-", 1)[1])
-    fit = fit_entries(newest(f"{case}/postProcessing/fitSlipLength/*/fit.dat"))
-    prof = profile_columns(newest(f"{case}/postProcessing/profileBins/*/channelProfile.dat"))
+    fit = read_dict(latest(f"{case}/postProcessing/fitSlipLength/*/fit.dat"))
+    prof = read_table(latest(f"{case}/postProcessing/profileBins/*/channelProfile.dat"))
     z, rho = prof["z"], prof["density"]
     lower, upper = fit["wallPosition"]
     rho_c, nu = fit["slipPredictionDensity"], fit["slipPredictionNu"]
