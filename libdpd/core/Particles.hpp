@@ -14,6 +14,8 @@ struct Particles {
     std::vector<std::uint8_t> species;
 
     std::size_t size() const { return id.size(); }
+    // The positions along one axis (0 x, 1 y, 2 z).
+    const std::vector<double>& position(int axis) const { return axis == 0 ? rx : (axis == 1 ? ry : rz); }
     void resize(std::size_t n);
     void reserve(std::size_t n);
     void add(std::uint64_t particleId, int speciesIndex, double x, double y, double z,

@@ -22,7 +22,7 @@ void BodyForce::apply(Particles& p, const std::vector<std::uint8_t>& frozenOfSpe
     if (!active()) return;
     const long n = static_cast<long>(p.size());
     const double mid = 0.5 * (box.lo[gradientAxis] + box.hi[gradientAxis]);
-    const std::vector<double>& coordinate = gradientAxis == 0 ? p.rx : (gradientAxis == 1 ? p.ry : p.rz);
+    const std::vector<double>& coordinate = p.position(gradientAxis);
     const bool reverse = type == Type::reversePoiseuille;
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {

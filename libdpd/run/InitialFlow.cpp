@@ -81,9 +81,9 @@ InitialFlow readInitialFlow(const Dictionary& fluidDict, const DpdModel& model, 
 
 void addInitialFlow(Particles& p, std::size_t begin, std::size_t end, const InitialFlow& flow) {
     if (flow.type == InitialFlow::Type::none) return;
+    const std::vector<double>& coordinate = p.position(flow.axis);
     for (std::size_t i = begin; i < end; ++i) {
-        const double s = flow.axis == 0 ? p.rx[i] : flow.axis == 1 ? p.ry[i] : p.rz[i];
-        const Eigen::Vector3d u = flow.velocityAt(s);
+        const Eigen::Vector3d u = flow.velocityAt(coordinate[i]);
         p.vx[i] += u.x();
         p.vy[i] += u.y();
         p.vz[i] += u.z();

@@ -17,7 +17,7 @@ int slabCount(const System& sys, int flowAxis) {
 
 int slabOf(const System& sys, int flowAxis, int nSlabs, std::size_t i) {
     if (flowAxis < 0) return 0;
-    const std::vector<double>& r = flowAxis == 0 ? sys.particles.rx : (flowAxis == 1 ? sys.particles.ry : sys.particles.rz);
+    const std::vector<double>& r = sys.particles.position(flowAxis);
     const double u = (r[i] - sys.box.lo[flowAxis]) / sys.box.length()[flowAxis];
     return std::min(nSlabs - 1, std::max(0, static_cast<int>(u * nSlabs)));
 }
@@ -59,10 +59,6 @@ struct SlabSums {
     }
 };
 
-double coordinateAlong(const Particles& p, int axis, std::size_t i) {
-    return axis == 0 ? p.rx[i] : axis == 1 ? p.ry[i] : p.rz[i];
-}
-
 }  // namespace
 
 MonitorReport monitor(const System& sys, int flowAxis) {
@@ -78,7 +74,7 @@ MonitorReport monitor(const System& sys, int flowAxis) {
         if (!allFinite(p, i)) { r.finite = false; continue; }
         const int s = slabOf(sys, flowAxis, nSlabs, i);
         const double fromCentre =
-            flowAxis < 0 ? 0.0 : coordinateAlong(p, flowAxis, i) - sys.box.lo[flowAxis] - (s + 0.5) * slabWidth;
+            flowAxis < 0 ? 0.0 : p.position(flowAxis)[i] - sys.box.lo[flowAxis] - (s + 0.5) * slabWidth;
         slabs[s].add(fromCentre, Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]));
         if (sys.isInsideSolid(p.rx[i], p.ry[i], p.rz[i])) ++r.insideWalls;
     }
@@ -89,8 +85,7 @@ MonitorReport monitor(const System& sys, int flowAxis) {
         r.momentum += slab.v;
         r.mobile += slab.n;
         if (slab.n <= fitted) continue;
-        const Eigen::Vector3d fluct = flowAxis < 0 ? slab.vv - slab.v.cwiseProduct(slab.v) / double(slab.n)
-                                                   : slab.residual();
+        const Eigen::Vector3d fluct = slab.residual();  // about the mean when flowAxis < 0 (all s = 0)
         twiceKinetic += sys.box.dimension == 3 ? fluct.sum() : fluct.x() + fluct.z();
         degreesOfFreedom += sys.box.dimension * (slab.n - fitted);
     }

@@ -32,9 +32,8 @@ void BinAccumulator::sample(const Particles& p) {
         samplesPerBlock_.push_back(0);
     }
     std::vector<BinSums>& block = blocks_.back();
-    const auto coordinates = [&p](int axis) -> const std::vector<double>& { return axis == 0 ? p.rx : (axis == 1 ? p.ry : p.rz); };
-    const std::vector<double>& r = coordinates(layout_.axis);
-    const std::vector<double>& r2 = coordinates(layout_.twoAxes() ? layout_.axis2 : layout_.axis);
+    const std::vector<double>& r = p.position(layout_.axis);
+    const std::vector<double>& r2 = p.position(layout_.twoAxes() ? layout_.axis2 : layout_.axis);
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (!speciesMask_[p.species[i]]) continue;
         const int b = layout_.binOf(r[i]);
