@@ -9,6 +9,7 @@
 #include "run/InitialConditions.hpp"
 #include "run/Monitors.hpp"
 #include "run/System.hpp"
+#include "run/ThreadBudget.hpp"
 
 #include <cmath>
 
@@ -72,6 +73,7 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     fluidOnly.geometryWall = GeometryWallSettings{};  // the box is filled through the solid too
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict");
     const auto integrator = makeIntegrator(model.integrator);
+    useThreadsForParticles(sys.particles.size());
     sys.sortByCell();
     sys.computeForces();
     report.equilibrationSteps = static_cast<std::size_t>(std::llround(time / dt));

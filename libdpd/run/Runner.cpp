@@ -8,6 +8,7 @@
 #include "run/DpdProperties.hpp"
 #include "run/Monitors.hpp"
 #include "run/System.hpp"
+#include "run/ThreadBudget.hpp"
 #include "sampling/FunctionObjects.hpp"
 
 #include <omp.h>
@@ -89,11 +90,20 @@ void printWalls(std::ostream& log, const System& sys) {
     }
 }
 
-void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const Integrator& integrator,
+struct ThreadUse {
+    int available = 1, used = 1;
+};
+
+void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const ThreadUse& threads,
+                 const Integrator& integrator,
                  const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes) {
     const std::size_t mobile = sys.countMobile();
     log << "Case           : " << caseDir << "\n"
-        << "Threads        : " << omp_get_max_threads() << "\n"
+        << "Threads        : " << threads.used << " of " << threads.available
+        << (threads.used < threads.available ? " (fewer particles than " + std::to_string(kParticlesPerThread) +
+                                                   " per thread: more would wait on each other)"
+                                             : std::string())
+        << "\n"
         << "Dimension      : " << sys.box.dimension << "\n"
         << "Particles      : " << sys.particles.size() << " (" << mobile << " mobile, "
         << sys.particles.size() - mobile << " frozen)\n"
@@ -121,10 +131,13 @@ public:
         FunctionObjects functions = FunctionObjects::read(control.functions, sys);
         const auto integrator = makeIntegrator(model.integrator);
         if (sys.time > 0.0) functions.restore((fs::path(caseDir_) / start).string());
+        ThreadUse threads;
+        threads.available = omp_get_max_threads();
+        threads.used = useThreadsForParticles(sys.particles.size());
         const bool restartForces = forcesStored(sys.particles);
         sys.sortByCell();
         if (!restartForces) sys.computeForces();
-        printHeader(log_, caseDir_, sys, *integrator, control, functions.size(), model.pairNotes);
+        printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes);
         loop(sys, control, model, functions, *integrator);
     }
 
