@@ -279,5 +279,45 @@ TEST_F(FitSlipLengthToolTest, ReverseModeNeedsAReversePoiseuilleForce) {
     EXPECT_TRUE(wroteNothing());
 }
 
+// Walls of a geometry block (randomEquilWall) are not planar walls of dpdProperties: wallPositions
+// places them. The same exact profile seen from walls at +-4.5 has the slip length u(4.5) / |u'(4.5)|,
+// so the fit must use the given positions, not the profile's ends.
+TEST_F(FitSlipLengthToolTest, WallPositionsPlaceTheWallsOfAGeometry) {
+    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);", false));
+    writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions (-4.5 4.5);\n");
+    writeTable(makeProfile(poiseuille, 0.01));
+    run();
+    const Dictionary d = fitDat();
+    expectRel(d.get<double>("nu"), kNu);
+    const double wall = 4.5, shear = kG * wall / kNu;
+    const auto slip = d.get<std::vector<double>>("slipLength");
+    expectRel(slip[0], poiseuille(-wall) / shear);
+    expectRel(slip[1], poiseuille(wall) / shear);
+    const auto position = d.get<std::vector<double>>("wallPosition");
+    EXPECT_DOUBLE_EQ(position[0], -wall);
+    EXPECT_DOUBLE_EQ(position[1], wall);
+}
+
+TEST_F(FitSlipLengthToolTest, WallPositionsBesidePlanarWallsIsAnError) {
+    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);"));
+    writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions (-4.5 4.5);\n");
+    writeTable(makeProfile(poiseuille, 0.01));
+    const std::string msg = inputError();
+    EXPECT_NE(msg.find("fitSlipLengthDict:4"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("'wallPositions'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("planar walls"), std::string::npos) << msg;
+    EXPECT_TRUE(wroteNothing());
+}
+
+TEST_F(FitSlipLengthToolTest, WallPositionsMustBeLowerThenUpper) {
+    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);", false));
+    writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions (4.5 -4.5);\n");
+    writeTable(makeProfile(poiseuille, 0.01));
+    const std::string msg = inputError();
+    EXPECT_NE(msg.find("'wallPositions'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("upper > lower"), std::string::npos) << msg;
+    EXPECT_TRUE(wroteNothing());
+}
+
 }  // namespace
 }  // namespace dpd
