@@ -11,6 +11,8 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 namespace dpd {
 
@@ -212,16 +214,20 @@ int couetteComponent(const FitSlipLengthSetup& s) {
     return a;
 }
 
+// A (low high) entry with high > low: fitRange, wallPositions.
+std::pair<double, double> readIncreasingPair(const Dictionary& d, const std::string& key, const std::string& low,
+                                             const std::string& high) {
+    const std::vector<double> pair = d.get<std::vector<double>>(key);
+    if (pair.size() != 2 || !(pair[1] > pair[0]))
+        d.fail(key, "expected (" + low + " " + high + ") with " + high + " > " + low);
+    return {pair[0], pair[1]};
+}
+
 // wallPositions (low high): the channel's walls when they belong to a geometry block.
 void readWallPositions(FitSlipLengthSetup& s) {
-    const Dictionary& d = s.dict;
-    if (!d.found("wallPositions")) return;
-    const std::vector<double> walls = d.get<std::vector<double>>("wallPositions");
-    if (walls.size() != 2 || !(walls[1] > walls[0]))
-        d.fail("wallPositions", "expected (lower upper) with upper > lower");
+    if (!s.dict.found("wallPositions")) return;
     s.hasWallPositions = true;
-    s.wallLow = walls[0];
-    s.wallHigh = walls[1];
+    std::tie(s.wallLow, s.wallHigh) = readIncreasingPair(s.dict, "wallPositions", "lower", "upper");
 }
 
 void readCouetteSetup(FitSlipLengthSetup& s) {
@@ -231,12 +237,8 @@ void readCouetteSetup(FitSlipLengthSetup& s) {
     s.component = couetteComponent(s);
     if (d.found("fitRange")) {
         if (d.found("exclude")) d.fail("fitRange", "give either fitRange or exclude, not both");
-        const std::vector<double> range = d.get<std::vector<double>>("fitRange");
-        if (range.size() != 2 || !(range[1] > range[0]))
-            d.fail("fitRange", "expected (low high) with high > low");
         s.hasFitRange = true;
-        s.fitLow = range[0];
-        s.fitHigh = range[1];
+        std::tie(s.fitLow, s.fitHigh) = readIncreasingPair(d, "fitRange", "low", "high");
     }
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : s.model.cutoff;
 }

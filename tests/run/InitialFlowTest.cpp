@@ -122,10 +122,7 @@ TEST(InitialFlow, RefusesWhatItCannotServe) {
 // The walls of a geometry block (randomEquilWall) are not planar walls: axis and wallPositions
 // place the channel of the start.
 TEST(InitialFlow, PoiseuilleBetweenGivenWallPositions) {
-    const std::string noWalls = "dimension 3; kT 1; cutoff 1; seed 1;\n"
-                                "species { fluid { frozen no; } wall { frozen yes; } }\n"
-                                "pairCoeffs { fluid-fluid { a 18.75; gamma 4.5; } fluid-wall { a 18.75; gamma 4.5; } }\n"
-                                "bodyForce { type uniform; value (0.02 0 0); }\n";
+    const std::string noWalls = properties("");
     const InitialFlow f = read(noWalls, "initialFlow { type poiseuille; nu 0.25; axis z; wallPositions (-4 6); }");
     ASSERT_EQ(f.type, InitialFlow::Type::poiseuille);
     EXPECT_EQ(f.axis, 2);
