@@ -298,25 +298,20 @@ TEST_F(FitSlipLengthToolTest, WallPositionsPlaceTheWallsOfAGeometry) {
     EXPECT_DOUBLE_EQ(position[1], wall);
 }
 
-TEST_F(FitSlipLengthToolTest, WallPositionsBesidePlanarWallsIsAnError) {
-    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);"));
-    writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions (-4.5 4.5);\n");
-    writeTable(makeProfile(poiseuille, 0.01));
-    const std::string msg = inputError();
-    EXPECT_NE(msg.find("fitSlipLengthDict:4"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("'wallPositions'"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("planar walls"), std::string::npos) << msg;
-    EXPECT_TRUE(wroteNothing());
-}
-
-TEST_F(FitSlipLengthToolTest, WallPositionsMustBeLowerThenUpper) {
-    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);", false));
-    writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions (4.5 -4.5);\n");
-    writeTable(makeProfile(poiseuille, 0.01));
-    const std::string msg = inputError();
-    EXPECT_NE(msg.find("'wallPositions'"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("upper > lower"), std::string::npos) << msg;
-    EXPECT_TRUE(wroteNothing());
+// wallPositions beside planar walls along the same axis is ambiguous; the pair must increase.
+TEST_F(FitSlipLengthToolTest, WallPositionsAreRefusedWhereTheyDoNotFit) {
+    const auto refusal = [&](bool planarWalls, const std::string& positions) {
+        write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);", planarWalls));
+        writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions " + positions + ";\n");
+        writeTable(makeProfile(poiseuille, 0.01));
+        const std::string msg = inputError();
+        EXPECT_TRUE(wroteNothing());
+        EXPECT_NE(msg.find("fitSlipLengthDict:4"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("'wallPositions'"), std::string::npos) << msg;
+        return msg;
+    };
+    EXPECT_NE(refusal(true, "(-4.5 4.5)").find("planar walls"), std::string::npos);
+    EXPECT_NE(refusal(false, "(4.5 -4.5)").find("upper > lower"), std::string::npos);
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 
 Reads the channel's profile and fit (postProcessing/...) and the viscosity measured without walls
 (viscosity/postProcessing/...), draws velocity, density and temperature across the channel with the
-analytic profile, writes results.dat, and exits non-zero when a check fails.
+analytic profile, writes results.dat, and exits non-zero when a check fails. Then compares the
+lattice walls with the random walls of randomMask/ and randomGmsh/ (wallComparison.py): walls.png,
+resultsWalls.dat and their checks.
 """
 import math
 import os
