@@ -61,7 +61,7 @@ def compare_walls(g, nu_ref, cutoff, test):
     too_short = [r.too_short for r in runs if r.too_short]
     names = ("nu", "slipLower", "slipUpper")
     errors = ("fitSlipLength's (blocks shorter than tau1 = d^2/(pi^2 nu))" if too_short else
-              f"jackknife over super-blocks of >= {wc.SUPER_BLOCK_TAUS:g} tau1 = {wc.SUPER_BLOCK_TAUS * tau1:.0f} "
+              f"jackknife over super-blocks of ~{wc.SUPER_BLOCK_TAUS:g} tau1 = {wc.SUPER_BLOCK_TAUS * tau1:.0f} "
               "(tau1 = d^2/(pi^2 nu))")
     checks, lines = [], [f"# Lattice and random walls, d = {hi - lo:g}, g = {g:g}; errors: {errors}"]
     for r in runs:

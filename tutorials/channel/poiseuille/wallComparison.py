@@ -6,7 +6,8 @@ Why the sampling blocks are not enough for error bars: the bin velocities of a c
 with its transverse momentum modes, the slowest of which decays in tau1 = d^2 / (pi^2 nu) (37 time
 units for d = 10, 600 for d = 40) and carries most of the variance of a time average. The blocks the
 run samples in (25 time units) are shorter than that, so their spread underestimates the error of
-the mean. Here consecutive blocks are joined into super-blocks of at least twice tau1; for an
+the mean. Here consecutive blocks are joined into super-blocks of twice tau1 (to the nearest
+sampling block; the test's 25 make 75 for 2 tau1 = 75.2); for an
 exponentially correlated signal, neighbouring means of blocks 2 tau1 long are correlated by about
 0.3, so the variance of the mean is still underestimated by ~25 % for the slowest mode and much less
 for the faster ones, which carry the rest (~10 % on the variance, 5 % on the errors, in all).
@@ -24,7 +25,7 @@ import numpy as np
 
 from dpdResults import latest, read_blocks, read_dict, read_table
 
-# Super-blocks at least this many slowest-mode decay times long, and at least this many of them.
+# Super-blocks this many slowest-mode decay times long, and at least this many of them.
 SUPER_BLOCK_TAUS = 2.0
 MIN_SUPER_BLOCKS = 5
 
@@ -62,7 +63,7 @@ class WallRun:
         self.fitted = (z >= self.walls[0] + self.exclude) & (z <= self.walls[1] - self.exclude)
         blocks = read_blocks(latest_sampling(case, profile))
         block_time = blocks["blockSamples"] * sample_time
-        per = max(1, math.ceil(SUPER_BLOCK_TAUS * tau1 / block_time))
+        per = max(1, round(SUPER_BLOCK_TAUS * tau1 / block_time))  # to the nearest sampling block
         self.super_blocks = len(blocks["count"]) // per
         self.super_block_time = per * block_time
         self.too_short = ""
