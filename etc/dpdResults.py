@@ -59,3 +59,27 @@ def read_sweep(path):
         except ValueError:
             out[name] = words
     return out
+
+
+def read_blocks(path):
+    """The sampled bins of a 1-D binnedProfile (<time>/sampling/<name>.h5) block by block, complete
+    blocks only: {"count", "sumU" (per block and bin: particle-samples and the sums of vx, vy, vz),
+    "samples" (per block), "centres", "width", "crossSection", "blockSamples"}."""
+    import h5py
+
+    with h5py.File(path, "r") as f:
+        blocks = np.array(f["blocks"])
+        samples = np.array(f["samplesPerBlock"])
+        attrs = {k: f.attrs[k] for k in ("nBins", "lo", "hi", "blockSamples", "crossSection")}
+    complete = samples == attrs["blockSamples"]
+    n = int(attrs["nBins"])
+    width = (float(attrs["hi"]) - float(attrs["lo"])) / n
+    return {
+        "count": blocks[complete, :, 0],
+        "sumU": blocks[complete, :, 1:4],
+        "samples": samples[complete],
+        "centres": float(attrs["lo"]) + width * (np.arange(n) + 0.5),
+        "width": width,
+        "crossSection": float(attrs["crossSection"]),
+        "blockSamples": int(attrs["blockSamples"]),
+    }

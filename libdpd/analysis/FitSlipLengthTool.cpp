@@ -11,6 +11,8 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 namespace dpd {
 
@@ -60,6 +62,27 @@ std::pair<const PlanarWall*, const PlanarWall*> channelWalls(const FitSlipLength
         s.dpdProperties.fail("walls", "walls '" + lower.name + "' and '" + upper.name +
                                           "' do not face each other across a channel along " + t.axisName());
     return {walls[0], walls[1]};
+}
+
+// The channel's two walls along the profile's axis, as the fits need them: the planar walls of
+// dpdProperties, or the positions wallPositions gives (the solid of a geometry block, at rest).
+struct ChannelBounds {
+    double low = 0.0, high = 0.0;                  // wall positions along the axis
+    double velocityLow = 0.0, velocityHigh = 0.0;  // the walls' velocities along the fitted component
+};
+
+ChannelBounds channelBounds(const FitSlipLengthSetup& s, const ProfileTableData& t, int axis) {
+    if (!s.hasWallPositions) {
+        const auto [lower, upper] = channelWalls(s, t, axis);
+        return {lower->point[axis], upper->point[axis], lower->velocity[s.component], upper->velocity[s.component]};
+    }
+    for (const PlanarWall& w : s.model.walls.walls())
+        if (w.normalAxis() == axis)
+            s.dict.fail("wallPositions", "the case has planar walls with normals along " + t.axisName() + " ('" +
+                                             w.name + "' in " + s.dpdProperties.fileName() +
+                                             "): their positions are used; wallPositions is for the walls of a "
+                                             "geometry block");
+    return {s.wallLow, s.wallHigh, 0.0, 0.0};
 }
 
 std::string vectorText(const Eigen::Vector3d& v) {
@@ -131,13 +154,11 @@ std::string shearStressColumn(int component, int axis) {
 
 void fitCouetteMode(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& profile,
                     FitSlipLengthResult& r) {
-    const auto [lower, upper] = channelWalls(s, t, r.axis);
-    const double yLow = lower->point[r.axis], yHigh = upper->point[r.axis];
-    const double fitLow = s.hasFitRange ? s.fitLow : yLow + s.exclude;
-    const double fitHigh = s.hasFitRange ? s.fitHigh : yHigh - s.exclude;
+    const ChannelBounds walls = channelBounds(s, t, r.axis);
+    const double fitLow = s.hasFitRange ? s.fitLow : walls.low + s.exclude;
+    const double fitHigh = s.hasFitRange ? s.fitHigh : walls.high - s.exclude;
     try {
-        r.couette = fitCouette(profile, yLow, yHigh, fitLow, fitHigh, lower->velocity[s.component],
-                               upper->velocity[s.component]);
+        r.couette = fitCouette(profile, walls.low, walls.high, fitLow, fitHigh, walls.velocityLow, walls.velocityHigh);
         r.stressColumn = shearStressColumn(s.component, r.axis);
         r.hasStress = t.has(r.stressColumn) && t.has(r.stressColumn + "Err");
         if (r.hasStress)
@@ -193,6 +214,22 @@ int couetteComponent(const FitSlipLengthSetup& s) {
     return a;
 }
 
+// A (low high) entry with high > low: fitRange, wallPositions.
+std::pair<double, double> readIncreasingPair(const Dictionary& d, const std::string& key, const std::string& low,
+                                             const std::string& high) {
+    const std::vector<double> pair = d.get<std::vector<double>>(key);
+    if (pair.size() != 2 || !(pair[1] > pair[0]))
+        d.fail(key, "expected (" + low + " " + high + ") with " + high + " > " + low);
+    return {pair[0], pair[1]};
+}
+
+// wallPositions (low high): the channel's walls when they belong to a geometry block.
+void readWallPositions(FitSlipLengthSetup& s) {
+    if (!s.dict.found("wallPositions")) return;
+    s.hasWallPositions = true;
+    std::tie(s.wallLow, s.wallHigh) = readIncreasingPair(s.dict, "wallPositions", "lower", "upper");
+}
+
 void readCouetteSetup(FitSlipLengthSetup& s) {
     const Dictionary& d = s.dict;
     if (s.model.bodyForce.active())
@@ -200,12 +237,8 @@ void readCouetteSetup(FitSlipLengthSetup& s) {
     s.component = couetteComponent(s);
     if (d.found("fitRange")) {
         if (d.found("exclude")) d.fail("fitRange", "give either fitRange or exclude, not both");
-        const std::vector<double> range = d.get<std::vector<double>>("fitRange");
-        if (range.size() != 2 || !(range[1] > range[0]))
-            d.fail("fitRange", "expected (low high) with high > low");
         s.hasFitRange = true;
-        s.fitLow = range[0];
-        s.fitHigh = range[1];
+        std::tie(s.fitLow, s.fitHigh) = readIncreasingPair(d, "fitRange", "low", "high");
     }
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : s.model.cutoff;
 }
@@ -218,8 +251,9 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     s.dpdProperties = dpdProperties;
     s.model = readDpdModel(dpdProperties);
     const Dictionary& d = s.dict;
-    d.checkKeys({"mode", "profile", "component", "exclude", "fitRange", "slipPredictionNu"});
+    d.checkKeys({"mode", "profile", "component", "exclude", "fitRange", "slipPredictionNu", "wallPositions"});
     if (d.found("slipPredictionNu")) s.slipPredictionNu = d.getPositive<double>("slipPredictionNu");
+    readWallPositions(s);
 
     const std::string mode = d.get<std::string>("mode");
     if (mode == "poiseuille") s.mode = FitSlipLengthMode::poiseuille;
@@ -243,6 +277,7 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     } else if (s.mode == FitSlipLengthMode::reversePoiseuille) {
         if (f.type != BodyForce::Type::reversePoiseuille || !f.active())
             d.fail("mode", "mode reversePoiseuille needs a nonzero body force of type reversePoiseuille in " + dpdFile);
+        if (s.hasWallPositions) d.fail("wallPositions", "mode reversePoiseuille has no walls");
     } else {
         readCouetteSetup(s);
         return s;
@@ -278,6 +313,7 @@ namespace {
 // The predicted slip length of tunable-slip channel walls, from the central density and nu (the
 // dictionary's slipPredictionNu, else the fit's own).
 void predictSlip(const FitSlipLengthSetup& s, const ProfileTableData& t, FitSlipLengthResult& r) {
+    if (s.hasWallPositions) return;  // walls of a geometry: no tunable slip
     const auto [lower, upper] = channelWalls(s, t, r.axis);
     if (!lower->hasTunableSlip && !upper->hasTunableSlip) return;
     const bool given = s.slipPredictionNu > 0.0;
@@ -318,12 +354,10 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     r.binsWithoutError = pts.withoutError;
 
     if (s.mode == FitSlipLengthMode::poiseuille) {
-        const auto [lowerWall, upperWall] = channelWalls(s, t, r.axis);
-        const PlanarWall& lower = *lowerWall;
-        const PlanarWall& upper = *upperWall;
+        const ChannelBounds walls = channelBounds(s, t, r.axis);
         try {
-            r.poiseuille = fitPoiseuille(pts.profile, r.g, lower.point[r.axis], upper.point[r.axis], s.exclude,
-                                         lower.velocity[s.component], upper.velocity[s.component]);
+            r.poiseuille = fitPoiseuille(pts.profile, r.g, walls.low, walls.high, s.exclude, walls.velocityLow,
+                                         walls.velocityHigh);
         } catch (const std::invalid_argument& e) {
             fitFailed(s, t, e);
         }

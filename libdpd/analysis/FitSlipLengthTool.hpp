@@ -14,6 +14,10 @@
 //                               // the line is fitted over
 //   slipPredictionNu 0.3;       // optional: the kinematic viscosity for the predicted slip length of
 //                               // tunable-slip walls (default: the fit's own nu)
+//   wallPositions (-20 20);     // poiseuille, couette: the channel's walls along the profile's axis
+//                               // when they are not planar walls of dpdProperties but the solid of a
+//                               // geometry block (randomEquilWall); such walls are at rest. An error
+//                               // when the case has planar walls along that axis (theirs are used)
 //
 // When a channel wall has tunable slip (walls/TunableSlipWall.hpp) the predicted slip length is written
 // beside the measured one (analysis/TunableSlipPrediction.hpp): slipLengthPredicted (lower upper).
@@ -64,6 +68,8 @@ struct FitSlipLengthSetup {
     bool hasFitRange = false;         // couette: fitRange given
     double fitLow = 0.0, fitHigh = 0.0;
     double slipPredictionNu = 0.0;    // > 0: slipPredictionNu given
+    bool hasWallPositions = false;    // wallPositions given: walls of a geometry, at rest
+    double wallLow = 0.0, wallHigh = 0.0;
 };
 
 // Checks keywords (unknown ones, mode, component, exclude) and resolves the component and the body

@@ -7,6 +7,7 @@
 #include "run/BoxDictionary.hpp"
 #include "run/DpdProperties.hpp"
 #include "run/InitialConditions.hpp"
+#include "run/InitialFlow.hpp"
 #include "run/Monitors.hpp"
 #include "run/System.hpp"
 #include "run/ThreadBudget.hpp"
@@ -19,7 +20,8 @@ namespace {
 
 int speciesOf(const Dictionary& parent, const std::string& key, const DpdModel& model, bool frozen) {
     const Dictionary& d = parent.subDict(key);
-    d.checkKeys(frozen ? std::vector<std::string>{"species"} : std::vector<std::string>{"species", "density"});
+    d.checkKeys(frozen ? std::vector<std::string>{"species"}
+                       : std::vector<std::string>{"species", "density", "initialFlow"});
     const std::string name = d.get<std::string>("species");
     const int s = model.species.indexOf(name);
     if (s < 0) d.fail("species", "'" + name + "' is not a species of constant/dpdProperties");
@@ -127,6 +129,7 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
     const int wallSpecies = speciesOf(dict, "wall", model, true);
     const double density = dict.subDict("fluid").getPositive<double>("density");
     report.drivingAxes = drivingAxes(dict, model);
+    const InitialFlow flow = readInitialFlow(dict.subDict("fluid"), model, snap.box, fluidSpecies, density);
 
     // 1. The geometry and its flags, checked before any particle moves.
     const SolidGeometry geometry = readGeometry(geometryDict, caseDir, snap.box, model.cutoff);
@@ -145,6 +148,7 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
 
     // 3. Freeze the wall, drop the rest of the solid.
     snap.particles = freezeWall(snap.particles, geometry, model.cutoff, fluidSpecies, wallSpecies, report);
+    addInitialFlow(snap.particles, 0, report.fluid, flow);  // the fluid comes first
     snap.time = 0.0;
     snap.step = 0;
     return snap;

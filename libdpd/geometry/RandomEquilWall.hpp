@@ -4,7 +4,8 @@
 // system/randomEquilWallDict:
 //
 //   box           { min (-8 -1.5 -6); max (8 1.5 6); }   // the whole periodic box
-//   fluid         { species fluid; density 4; }
+//   fluid         { species fluid; density 4; }   // optional initialFlow { type poiseuille; axis z;
+//                                                 // wallPositions (-20 20); } (run/InitialFlow.hpp)
 //   wall          { species wall; }          // a frozen species: the particles kept in the solid
 //   equilibration { time 5; deltaT 0.02; }   // DPD run of the filled box: one fluid, no walls,
 //                                            // no body force, the integrator of dpdProperties
@@ -16,7 +17,8 @@
 // 2. fills the whole box at the density (Maxwellian velocities at kT) and runs it to equilibrium;
 // 3. freezes the particles in the solid within one cutoff of the fluid (exact distance to the
 //    geometry's surface) as the wall species, at rest, and drops the deeper ones. The fluid keeps its
-//    equilibrated velocities less their mean (no net momentum). Ids are renumbered, fluid first.
+//    equilibrated velocities less their mean (no net momentum), plus the initial flow if one is
+//    given. Ids are renumbered, fluid first.
 #include "io/Snapshot.hpp"
 
 #include <array>

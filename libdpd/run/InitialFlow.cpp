@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace dpd {
 
@@ -20,27 +21,54 @@ Eigen::Vector3d InitialFlow::velocityAt(double s) const {
 
 namespace {
 
+// The uniform body force a Poiseuille start between walls normal to `axis` needs.
+void channelBodyForce(const Dictionary& d, const DpdModel& model, int axis, InitialFlow& flow) {
+    if (model.bodyForce.type != BodyForce::Type::uniform || !model.bodyForce.active())
+        d.fail("type", "a poiseuille start needs a uniform body force in constant/dpdProperties");
+    if (model.bodyForce.g[axis] != 0.0)
+        d.fail("type", "the body force has a component along the walls' normal: no steady channel flow");
+    flow.g = model.bodyForce.g;
+}
+
+// The channel of a Poiseuille start between the walls of a geometry block: axis and wallPositions.
+void channelFromPositions(const Dictionary& d, const DpdModel& model, InitialFlow& flow) {
+    if (!d.found("axis") || !d.found("wallPositions"))
+        d.fail(d.found("axis") ? "axis" : "wallPositions", "give both axis and wallPositions (the walls of a geometry)");
+    if (!model.walls.empty())
+        d.fail("wallPositions", "constant/dpdProperties has planar walls: the start uses theirs; wallPositions is for "
+                                "the walls of a geometry block");
+    const std::string axis = d.get<std::string>("axis");
+    if (axis != "x" && axis != "y" && axis != "z") d.fail("axis", "expected x, y or z, not '" + axis + "'");
+    const std::vector<double> walls = d.get<std::vector<double>>("wallPositions");
+    if (walls.size() != 2 || !(walls[1] > walls[0])) d.fail("wallPositions", "expected (lower upper) with upper > lower");
+    flow.axis = axis[0] - 'x';
+    flow.lower = walls[0];
+    flow.upper = walls[1];
+    channelBodyForce(d, model, flow.axis, flow);
+}
+
 // Fills the channel geometry of a Poiseuille start from the model's walls and body force.
 void channelFromModel(const Dictionary& d, const DpdModel& model, InitialFlow& flow) {
+    if (d.found("axis") || d.found("wallPositions")) {
+        channelFromPositions(d, model, flow);
+        return;
+    }
     const auto& walls = model.walls.walls();
     if (walls.size() != 2)
-        d.fail("type", "a poiseuille start needs exactly two planar walls in constant/dpdProperties");
+        d.fail("type", "a poiseuille start needs exactly two planar walls in constant/dpdProperties (or, for the "
+                       "walls of a geometry, axis and wallPositions)");
     const int axis = walls[0].normalAxis();
     if (axis < 0 || walls[1].normalAxis() != axis || walls[0].normal.dot(walls[1].normal) > -0.5)
         d.fail("type", "a poiseuille start needs two parallel axis-aligned walls facing each other");
     for (const auto& w : walls)
         if (w.velocity.squaredNorm() > 0.0)
             d.fail("type", "a poiseuille start needs walls at rest (wall '" + w.name + "' moves)");
-    if (model.bodyForce.type != BodyForce::Type::uniform || !model.bodyForce.active())
-        d.fail("type", "a poiseuille start needs a uniform body force in constant/dpdProperties");
-    if (model.bodyForce.g[axis] != 0.0)
-        d.fail("type", "the body force has a component along the walls' normal: no steady channel flow");
+    channelBodyForce(d, model, axis, flow);
     // The solid lies behind each wall: the wall whose normal points up the axis is the lower one.
     const bool firstIsLower = walls[0].normal[axis] > 0.0;
     flow.axis = axis;
     flow.lower = (firstIsLower ? walls[0] : walls[1]).point[axis];
     flow.upper = (firstIsLower ? walls[1] : walls[0]).point[axis];
-    flow.g = model.bodyForce.g;
 }
 
 // The periodic box of a reverse-Poiseuille start.
@@ -61,13 +89,14 @@ InitialFlow readInitialFlow(const Dictionary& fluidDict, const DpdModel& model, 
     InitialFlow flow;
     if (!fluidDict.found("initialFlow")) return flow;
     const Dictionary& d = fluidDict.subDict("initialFlow");
-    d.checkKeys({"type", "nu"});
+    d.checkKeys({"type", "nu", "axis", "wallPositions"});
     const std::string type = d.get<std::string>("type");
     if (type == "none") return flow;
     if (type == "poiseuille") {
         flow.type = InitialFlow::Type::poiseuille;
         channelFromModel(d, model, flow);
     } else if (type == "reversePoiseuille") {
+        if (d.found("wallPositions")) d.fail("wallPositions", "a reversePoiseuille start has no walls");
         flow.type = InitialFlow::Type::reversePoiseuille;
         periodicBoxFromModel(d, model, box, flow);
     } else {

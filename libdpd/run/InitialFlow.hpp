@@ -5,6 +5,9 @@
 //   {
 //       type    poiseuille;     // none (default) | poiseuille | reversePoiseuille
 //       nu      0.277;          // optional: kinematic viscosity; default the kinetic-theory estimate
+//       axis          z;        // poiseuille between the walls of a geometry block (randomEquilWall),
+//       wallPositions (-20 20); //   which are not planar walls of dpdProperties: their normal axis
+//                               //   and positions along it (both or neither; walls at rest)
 //   }
 //
 // Why: started from rest, plane Poiseuille flow reaches its steady profile only as its slowest mode
@@ -39,7 +42,8 @@ struct InitialFlow {
 };
 
 // Reads `initialFlow` from the fluid's sub-dictionary (absent: none). A Poiseuille start needs two
-// parallel planar walls at rest with opposite normals and a uniform body force along them; a reverse
+// parallel planar walls at rest with opposite normals (or, without planar walls, axis and
+// wallPositions) and a uniform body force along them; a reverse
 // Poiseuille start needs that body force and no walls; anything else is an InputError naming the
 // keyword. `density` is the fluid's, for the default viscosity.
 InitialFlow readInitialFlow(const Dictionary& fluidDict, const DpdModel& model, const Box& box, int fluidSpecies,

@@ -279,5 +279,40 @@ TEST_F(FitSlipLengthToolTest, ReverseModeNeedsAReversePoiseuilleForce) {
     EXPECT_TRUE(wroteNothing());
 }
 
+// Walls of a geometry block (randomEquilWall) are not planar walls of dpdProperties: wallPositions
+// places them. The same exact profile seen from walls at +-4.5 has the slip length u(4.5) / |u'(4.5)|,
+// so the fit must use the given positions, not the profile's ends.
+TEST_F(FitSlipLengthToolTest, WallPositionsPlaceTheWallsOfAGeometry) {
+    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);", false));
+    writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions (-4.5 4.5);\n");
+    writeTable(makeProfile(poiseuille, 0.01));
+    run();
+    const Dictionary d = fitDat();
+    expectRel(d.get<double>("nu"), kNu);
+    const double wall = 4.5, shear = kG * wall / kNu;
+    const auto slip = d.get<std::vector<double>>("slipLength");
+    expectRel(slip[0], poiseuille(-wall) / shear);
+    expectRel(slip[1], poiseuille(wall) / shear);
+    const auto position = d.get<std::vector<double>>("wallPosition");
+    EXPECT_DOUBLE_EQ(position[0], -wall);
+    EXPECT_DOUBLE_EQ(position[1], wall);
+}
+
+// wallPositions beside planar walls along the same axis is ambiguous; the pair must increase.
+TEST_F(FitSlipLengthToolTest, WallPositionsAreRefusedWhereTheyDoNotFit) {
+    const auto refusal = [&](bool planarWalls, const std::string& positions) {
+        write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);", planarWalls));
+        writeDict("mode poiseuille;\nprofile channelProfile;\nwallPositions " + positions + ";\n");
+        writeTable(makeProfile(poiseuille, 0.01));
+        const std::string msg = inputError();
+        EXPECT_TRUE(wroteNothing());
+        EXPECT_NE(msg.find("fitSlipLengthDict:4"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("'wallPositions'"), std::string::npos) << msg;
+        return msg;
+    };
+    EXPECT_NE(refusal(true, "(-4.5 4.5)").find("planar walls"), std::string::npos);
+    EXPECT_NE(refusal(false, "(4.5 -4.5)").find("upper > lower"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace dpd

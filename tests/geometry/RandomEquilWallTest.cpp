@@ -137,4 +137,32 @@ TEST_F(RandomEquilWall, PercolationNeedsAFaceConnectedPathAcrossThePeriodicBox) 
     EXPECT_TRUE(fluidPercolates(flagsOf(diagonal), 2));
 }
 
+// With initialFlow the fluid starts in the laminar profile between the given walls: the thermal
+// velocities keep zero mean, so the velocities less the profile sum to zero exactly (not a
+// statistical statement), and the frozen wall stays at rest.
+TEST_F(RandomEquilWall, InitialFlowAddsTheLaminarProfileToTheFluid) {
+    RandomEquilWallReport r;
+    const std::string dict = "box { min (0 0 0); max (8 3 8); }\n"
+                             "fluid { species fluid; density 4; initialFlow { type poiseuille; nu 0.25; axis z; "
+                             "wallPositions (1.5 6.5); } }\nwall { species wall; }\nequilibration { time 2; deltaT 0.02; }\n";
+    const Snapshot s = build(channel(3), dict, r);
+    double residual = 0.0, profileMomentum = 0.0;
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+        const double z = s.particles.rz[i];
+        const double u = 0.02 * (z - 1.5) * (6.5 - z) / (2.0 * 0.25);
+        if (i < r.fluid) {
+            residual += s.particles.vx[i] - u;
+            profileMomentum += u;
+        } else {
+            EXPECT_EQ(s.particles.vx[i], 0.0);
+        }
+    }
+    EXPECT_GT(profileMomentum / r.fluid, 0.1);  // mean of the parabola: 2/3 of its peak 0.25
+    EXPECT_LT(std::abs(residual), 1e-9);
+    EXPECT_NE(error(channel(3), std::string(equilDict).replace(std::string(equilDict).find("density 4;"), 10,
+                                                                "density 4; initialFlow { type poiseuille; }"))
+                  .find("wallPositions"),
+              std::string::npos);
+}
+
 }  // namespace

@@ -118,3 +118,27 @@ TEST(InitialFlow, RefusesWhatItCannotServe) {
     EXPECT_NE(refusal(properties(kLower + kUpper), "initialFlow { type poiseuille; nu -1; }").find("positive"),
               std::string::npos);
 }
+
+// The walls of a geometry block (randomEquilWall) are not planar walls: axis and wallPositions
+// place the channel of the start.
+TEST(InitialFlow, PoiseuilleBetweenGivenWallPositions) {
+    const std::string noWalls = properties("");
+    const InitialFlow f = read(noWalls, "initialFlow { type poiseuille; nu 0.25; axis z; wallPositions (-4 6); }");
+    ASSERT_EQ(f.type, InitialFlow::Type::poiseuille);
+    EXPECT_EQ(f.axis, 2);
+    // Centre z = 1, u_max = 0.02 * 100 / (8 * 0.25) = 1; zero at and beyond the given walls.
+    EXPECT_NEAR(f.velocityAt(1.0).x(), 1.0, 1e-14);
+    EXPECT_EQ(f.velocityAt(-4.5).norm(), 0.0);
+    EXPECT_EQ(f.velocityAt(6.0).norm(), 0.0);
+    // Both keywords or neither; not beside planar walls; a real axis; lower before upper.
+    EXPECT_NE(refusal(noWalls, "initialFlow { type poiseuille; axis z; }").find("both"), std::string::npos);
+    EXPECT_NE(refusal(properties(kLower + kUpper), "initialFlow { type poiseuille; axis z; wallPositions (-4 6); }")
+                  .find("planar walls"),
+              std::string::npos);
+    EXPECT_NE(refusal(noWalls, "initialFlow { type poiseuille; axis w; wallPositions (-4 6); }").find("'axis'"),
+              std::string::npos);
+    EXPECT_NE(refusal(noWalls, "initialFlow { type poiseuille; axis z; wallPositions (6 -4); }").find("upper > lower"),
+              std::string::npos);
+    EXPECT_NE(refusal(noWalls, "initialFlow { type poiseuille; axis x; wallPositions (-4 6); }").find("normal"),
+              std::string::npos);
+}

@@ -1,0 +1,16 @@
+// Ramp contraction (METHODS.md scene 7), small (the -test version of ramp.geo): a channel 24 long and 12 wide, narrowed
+// in the middle to half its width by a symmetric trapezoid on each wall: 45-degree ramps from the
+// wall at |x| = b up to the throat, |z| = h over |x| < c. The throat is the square contraction's
+// (half width, length 2c = H); the ramps replace its vertical steps. gmsh's x-y plane is the box's x-z
+// plane (extrudeAxis y in constant/dpdProperties); the fluid is the surface of the group "fluid".
+L = 12;  H = 6;  c = 3;  h = 3;  b = 6;
+Point(1) = {-L, -H, 0};  Point(2) = {-b, -H, 0};  Point(3) = {-c, -h, 0};  Point(4) = {c, -h, 0};
+Point(5) = {b, -H, 0};   Point(6) = {L, -H, 0};   Point(7) = {L, H, 0};    Point(8) = {b, H, 0};
+Point(9) = {c, h, 0};    Point(10) = {-c, h, 0};  Point(11) = {-b, H, 0};  Point(12) = {-L, H, 0};
+For k In {1:11}
+  Line(k) = {k, k + 1};
+EndFor
+Line(12) = {12, 1};
+Curve Loop(1) = {1:12};
+Plane Surface(1) = {1};
+Physical Surface("fluid") = {1};
