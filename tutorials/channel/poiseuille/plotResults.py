@@ -89,25 +89,22 @@ def compare_walls(g, nu_ref, cutoff, test):
     low, high = wc.chi2_bounds(dof_eff)
     lines.append(f"# profile differences over the {n} bins of the fit range: effective independent bins {dof_eff:.1f} "
                  f"(the slow modes correlate neighbours), so chi2/dof is expected in [{low:.2f}, {high:.2f}] (3 sigma)")
-    # The mask and the gmsh file build the same random wall: their channels must agree. Lattice and
-    # random walls are compared with the same statistics and reported, not checked: at this scene's
-    # wall shear rate they differ (README: the random walls take less of the viscous heat away).
-    for i, j, checked in ((1, 2, True), (1, 0, False), (2, 0, False)):
+    # The mask and the gmsh file build the same random wall, and random and lattice walls must give
+    # the same profile (METHODS.md 3.2). A Poiseuille profile is fixed by nu and the two slip lengths
+    # (g and d being the same): those are checked pair by pair with jackknife errors over independent
+    # super-blocks. The per-bin chi2 of the difference is reported, not checked: its bin errors
+    # (profileBins' times sqrt(s), s pooled from five super-blocks) miss most of the slow mode's
+    # coherent fluctuation, which the jackknife catches (test: gmsh - lattice nu differed by 1.3
+    # jackknife errors while the per-bin chi2/dof was 6 over ~5 effective bins).
+    for i, j in ((1, 2), (1, 0), (2, 0)):
         a, b = runs[i], runs[j]
         for k, name in enumerate(names):
             diff, sigma, allowed = wc.agreement(a, b, k)
             what = f"{name}: {a.label} and {b.label} walls agree within 3 combined standard errors (t-widened for their few blocks)"
-            value = f"{diff:+.4f} +- {sigma:.4f} (allowed {allowed:.4f})"
-            if checked:
-                checks.append((what, abs(diff) < allowed, value))
-            else:
-                lines.append(f"compared  {'agree' if abs(diff) < allowed else 'DIFFER'}  {what}: {value}")
+            checks.append((what, abs(diff) < allowed, f"{diff:+.4f} +- {sigma:.4f} (allowed {allowed:.4f})"))
         chi2, bins = wc.profile_chi2(a, b)
-        what = f"ux({a.label}) - ux({b.label}) per bin: chi2/dof in [{low:.2f}, {high:.2f}]"
-        if checked:
-            checks.append((what, low <= chi2 <= high, f"{chi2:.3f} over {bins} bins"))
-        else:
-            lines.append(f"compared  {'agree' if low <= chi2 <= high else 'DIFFER'}  {what}: {chi2:.3f} over {bins} bins")
+        lines.append(f"compared  ux({a.label}) - ux({b.label}) per bin: chi2/dof {chi2:.3f} over {bins} bins "
+                     f"(3-sigma range with per-bin errors [{low:.2f}, {high:.2f}])")
     # Each random wall on its own, held to what the lattice walls are held to (main checks).
     for r in runs[1:]:
         v, e = r.values()
