@@ -1,10 +1,15 @@
 #pragma once
 // How many OpenMP threads a run of n particles uses. A step has about twenty parallel regions, each
-// ending in a barrier; waking a sleeping thread for one costs microseconds, so below a few thousand
-// particles per thread the threads spend longer waiting for each other than they save, and a small
-// system runs several times slower on two threads than on one (the test-size tutorials). Results do
-// not depend on the thread count (counter-based random numbers, fixed reduction order), so the
-// choice costs nothing but time. OMP_NUM_THREADS still sets how many are available.
+// ending in a barrier, so a small system on two threads lives on how fast a waiting thread gets its
+// partner back. Measured (dpdBenchmark, standard fluid, 2 cores): on an idle machine with the default
+// wait policy two threads beat one from 2000 particles (5.6e6 against 3.1e6 particle-steps/s); with
+// any other process running they lose badly below a few thousand (2000: 0.8e6 against 2.4e6; a 2-D
+// tutorial of 1500 particles ran at 1.5e5 under load, 2.7e6 on one thread), and with
+// OMP_WAIT_POLICY=passive they lose up to ~30000 even on an idle machine. One thread per 4000
+// particles gives up at most ~1.7x on tiny systems on an idle machine (which run in seconds) for
+// runs that do not collapse when the machine is shared. Results do not depend on the thread count
+// (counter-based random numbers, fixed reduction order), so the choice costs nothing but time.
+// OMP_NUM_THREADS still sets how many are available.
 #include <cstddef>
 
 namespace dpd {
