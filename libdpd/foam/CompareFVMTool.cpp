@@ -196,14 +196,20 @@ ComparisonMetrics compareOrFail(const CompareFVMResult& r, const std::vector<dou
     }
 }
 
-CompareFVMResult compareTime(const Setup& s, const ProfileTableData& t, const std::vector<Eigen::Vector3d>& centres,
-                             const std::vector<Eigen::Vector3d>& U, const std::string& time) {
+// What every comparison records about its inputs.
+CompareFVMResult newResult(const Setup& s, const ProfileTableData& t, const std::string& time) {
     CompareFVMResult r;
     r.time = time;
     r.foamCase = s.foamCase.string();
     r.foamTime = s.foamTime;
     r.profileFile = t.file;
     r.component = s.component;
+    return r;
+}
+
+CompareFVMResult compareTime(const Setup& s, const ProfileTableData& t, const std::vector<Eigen::Vector3d>& centres,
+                             const std::vector<Eigen::Vector3d>& U, const std::string& time) {
+    CompareFVMResult r = newResult(s, t, time);
     r.axis = axisFromLetter(t.axisName());
     if (r.axis < 0) throw IoError(t.file + ": the first column is '" + t.axisName() + "', not a bin axis x, y or z");
     if (r.axis == r.component) s.dict.fail("component", std::string("the component ") + axisLetter(r.component) + " is the profile's axis");
@@ -265,12 +271,7 @@ bool gridLine(const FoamSampledLine& l, const BinGrid& grid, const CompareFVMRes
 
 CompareFVMResult compareGrid(const Setup& s, const ProfileTableData& t, const std::vector<Eigen::Vector3d>& centres,
                              const std::vector<Eigen::Vector3d>& U, const std::string& time) {
-    CompareFVMResult r;
-    r.time = time;
-    r.foamCase = s.foamCase.string();
-    r.foamTime = s.foamTime;
-    r.profileFile = t.file;
-    r.component = s.component;
+    CompareFVMResult r = newResult(s, t, time);
     r.axis = axisFromLetter(t.names[0]);
     r.axis2 = axisFromLetter(t.names[1]);
     if (r.axis < 0 || r.axis2 == r.axis)

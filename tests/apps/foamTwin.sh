@@ -141,12 +141,8 @@ import os, re, sys
 import numpy as np
 case = sys.argv[1]
 t = max((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and float(d) > 0), key=float)
-def field(name):
-    body = open(f"{case}/{t}/{name}").read().split("internalField")[1]
-    n = int(re.search(r"List<vector>\s*(\d+)", body).group(1))
-    nums = re.findall(r"[-+0-9.eE]+", body[body.index("(", body.index("List<vector>")) + 1:].replace("(", " ").replace(")", " "))
-    return np.array(nums[: 3 * n], float).reshape(n, 3)
-C, U = field("C"), field("U")
+C, U = [np.array(re.findall(r"\(([-+0-9.eE]+) ([-+0-9.eE]+) ([-+0-9.eE]+)\)", open(f"{case}/{t}/{name}").read().split("internalField")[1].split("boundaryField")[0]), float)
+        for name in ("C", "U")]
 s, n = np.zeros((4, 4)), np.zeros((4, 4))
 np.add.at(s, (C[:, 2].astype(int), C[:, 0].astype(int)), U[:, 0])
 np.add.at(n, (C[:, 2].astype(int), C[:, 0].astype(int)), 1)

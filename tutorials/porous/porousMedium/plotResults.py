@@ -2,8 +2,8 @@
 """Porous medium tutorial (METHODS.md scene 6): pictures, results table and the checks.
 
 Reads the DPD 2-D field (postProcessing/profileBins/<time>/flowField.dat, 1 x 1 bins), the solver's
-log (kT series, particles inside the solid, run time), the viscosity fit (viscosity/), the simpleFoam
-twin (simpleFoam/<time>/C, U) and compareFVM's result (postProcessing/compareFVM/<time>/compare.dat,
+log (kT series, particles inside the solid, run time), the simpleFoam twin (simpleFoam/<time>/C, U,
+constant/dpdCase for nu) and compareFVM's result (postProcessing/compareFVM/<time>/compare.dat,
 profiles.dat). Writes porousMedium.png (DPD |u|, density, kT series, profiles across the crack),
 compareFVM.png (DPD |u|, simpleFoam |u|, their difference, the crack's centre line) and results.dat;
 exits non-zero when a check fails.
@@ -154,7 +154,7 @@ def main():
     cmp, lines = read_compare(cmp_path)
     crack = lines["crack"]
     prof = read_table(os.path.join(os.path.dirname(cmp_path), "profiles.dat"))
-    visc = read_dict(latest("viscosity/postProcessing/fitSlipLength/*/fit.dat"))
+    twin = read_dict("simpleFoam/constant/dpdCase")   # nu and where it came from
     sample_start = float(re.search(r"startTime\s+([0-9.eE+]+);", open("system/controlDict").read().split("flowField")[1]).group(1))
 
     # Temperature: the bins' kT (about each bin's own flow), and the log's series corrected for the
@@ -230,7 +230,7 @@ def main():
         f.write(f"# Porous medium (METHODS.md scene 6){' - TEST MODE' if test_mode else ''}: {table}, {cmp_path}\n")
         f.write(f"mask               {mask_path}  ({shape[1]} x {shape[0]} bins of 1 r_c)\n")
         f.write(f"porosity           DPD {cmp['porosityDPD']:.4f}  simpleFoam {cmp['porosityFVM']:.4f}\n")
-        f.write(f"nu                 {visc['nu']:.5f}  (viscosity/, no walls)\n")
+        f.write(f"nu                 {twin['nu']:.5f}  ({twin['nuSource']})\n")
         f.write(f"runTime            {seconds:.0f} s for {steps} steps; {rate:.4g} particle-steps/s\n")
         f.write(f"kTSeries           (" + " ".join(f"{t:g}:{k:.4f}" for t, k in zip(times, kts)) + ")\n")
         f.write(f"kTLog              {kT_log:.5f} +- {kT_log_err:.5f}  (mean of the series from t = {sample_start:g})\n")
@@ -303,7 +303,7 @@ def main():
     ax[1, 0].set_title(f"difference: L2 field {cmp['L2']:.3f}, interior {l2_interior:.3f}", fontsize=10)
     on = crack_rows
     ax[1, 1].errorbar(prof["x"][on], prof["uDPD"][on], yerr=prof["uDPDErr"][on], fmt="o", ms=2, label="DPD (bins on the line)")
-    ax[1, 1].plot(prof["x"][on], prof["u_crack"][on], "r-", lw=1.2, label=f"simpleFoam, nu = {visc['nu']:.4f}")
+    ax[1, 1].plot(prof["x"][on], prof["u_crack"][on], "r-", lw=1.2, label=f"simpleFoam, nu = {twin['nu']:.4f}")
     ax[1, 1].set_xlabel("x")
     ax[1, 1].set_ylabel("ux on the crack's centre line")
     ax[1, 1].legend(fontsize=8)
