@@ -1,7 +1,7 @@
 """Reading what the tools write, for the tutorials' plotResults.py scripts.
 
     import sys, os; sys.path.insert(0, os.path.join(os.environ["DPD_PROJECT_DIR"], "etc"))
-    from dpdResults import latest, read_dict, read_sweep, read_table
+    from dpdResults import latest, parse_dict, read_dict, read_sweep, read_table
 """
 import glob
 import os
@@ -31,7 +31,12 @@ def read_dict(path):
     """The plain `key value;` and `key (a b ...);` entries of a dictionary the tools write (fit.dat,
     compare.dat): numbers as floats, lists as lists of floats, anything else as a string."""
     with open(path) as f:
-        text = re.sub(r"FoamFile\s*\{[^}]*\}", "", f.read())
+        return parse_dict(f.read())
+
+
+def parse_dict(text):
+    """read_dict on the text of a dictionary (or of one sub-dictionary's body)."""
+    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", text)
     out = {}
     for key, value in re.findall(r"^\s*(\w+)\s+([^;]+);", text, re.M):
         value = value.strip()

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <numeric>
 #include <ostream>
 #include <sstream>
@@ -41,6 +42,7 @@ struct Setup {
     std::string foamTime;
     std::string profile;
     int component = -1;
+    double fluidDensity = 0.0;   // 0: not known (needed for 2-D profiles only)
 };
 
 // The DPD case must still be the one makeFoamCase read: same body force, walls and box.
@@ -72,12 +74,23 @@ void checkRecord(const Setup& s, const std::string& caseDir) {
     }
 }
 
+// The density the wall builder filled the box with (0 when there is no builder dictionary).
+double builderDensity(const fs::path& caseDir) {
+    for (const char* name : {"randomEquilWallDict", "blockFrozenWallDict"}) {
+        const fs::path p = caseDir / "system" / name;
+        if (!fs::is_regular_file(p)) continue;
+        const Dictionary d = Dictionary::readFile(p.string());
+        if (d.found("fluid") && d.subDict("fluid").found("density")) return d.subDict("fluid").getPositive<double>("density");
+    }
+    return 0.0;
+}
+
 Setup readSetup(const CompareFVMOptions& o) {
     const fs::path caseDir(o.caseDir);
     Setup s;
     s.dict = optionalDictionary(caseDir / "system" / "compareFVMDict");
     const Dictionary& d = s.dict;
-    d.checkKeys({"foamCase", "profile", "component", "foamTime"});
+    d.checkKeys({"foamCase", "profile", "component", "foamTime", "fluidDensity"});
     std::string foamCase = o.foamCase;
     if (foamCase.empty()) foamCase = d.getOrDefault<std::string>("foamCase", "");
     if (foamCase.empty())
@@ -112,6 +125,7 @@ Setup readSetup(const CompareFVMOptions& o) {
         if (nonzero != 1) d.fail("component", "the body force does not point along one axis: say which component to compare");
     }
     s.profile = d.getOrDefault<std::string>("profile", "");
+    s.fluidDensity = d.found("fluidDensity") ? d.getPositive<double>("fluidDensity") : builderDensity(caseDir);
     return s;
 }
 
@@ -182,14 +196,20 @@ ComparisonMetrics compareOrFail(const CompareFVMResult& r, const std::vector<dou
     }
 }
 
-CompareFVMResult compareTime(const Setup& s, const ProfileTableData& t, const std::vector<Eigen::Vector3d>& centres,
-                             const std::vector<Eigen::Vector3d>& U, const std::string& time) {
+// What every comparison records about its inputs.
+CompareFVMResult newResult(const Setup& s, const ProfileTableData& t, const std::string& time) {
     CompareFVMResult r;
     r.time = time;
     r.foamCase = s.foamCase.string();
     r.foamTime = s.foamTime;
     r.profileFile = t.file;
     r.component = s.component;
+    return r;
+}
+
+CompareFVMResult compareTime(const Setup& s, const ProfileTableData& t, const std::vector<Eigen::Vector3d>& centres,
+                             const std::vector<Eigen::Vector3d>& U, const std::string& time) {
+    CompareFVMResult r = newResult(s, t, time);
     r.axis = axisFromLetter(t.axisName());
     if (r.axis < 0) throw IoError(t.file + ": the first column is '" + t.axisName() + "', not a bin axis x, y or z");
     if (r.axis == r.component) s.dict.fail("component", std::string("the component ") + axisLetter(r.component) + " is the profile's axis");
@@ -217,6 +237,109 @@ CompareFVMResult compareTime(const Setup& s, const ProfileTableData& t, const st
     return r;
 }
 
+bool isGridTable(const ProfileTableData& t) { return t.names.size() > 1 && axisFromLetter(t.names[1]) >= 0; }
+
+double meshCellSize(const Dictionary& record, int axis) {
+    return (record.get<Eigen::Vector3d>("meshMax")[axis] - record.get<Eigen::Vector3d>("meshMin")[axis]) /
+           record.get<std::vector<int>>("cells").at(static_cast<std::size_t>(axis));
+}
+
+// A sampled line along one of the grid's axes, against the row of bins it runs through: the line's
+// values at the centres of the compared points in that row, NaN elsewhere. False when the line is not
+// along a grid axis.
+bool gridLine(const FoamSampledLine& l, const BinGrid& grid, const CompareFVMResult& r, std::vector<double>& out) {
+    for (int along = 0; along < 2; ++along) {
+        const int axis = along == 0 ? grid.axis0 : grid.axis1;
+        std::vector<double> x, u;
+        if (!lineProfile(l, axis, r.component, x, u)) continue;
+        // Samples further apart than 1.5 spacings straddle solid, where OpenFOAM writes no point.
+        double spacing = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 1; i < x.size(); ++i)
+            if (x[i] > x[i - 1]) spacing = std::min(spacing, x[i] - x[i - 1]);
+        const double across = l.points.front()[along == 0 ? grid.axis1 : grid.axis0];
+        const long home = along == 0 ? grid.index(0.5 * (grid.lo0 + grid.hi0), across) : grid.index(across, 0.5 * (grid.lo1 + grid.hi1));
+        const auto rowOf = [&](long k) { return along == 0 ? k / grid.n0 : k % grid.n0; };
+        out.assign(r.x.size(), std::nan(""));
+        for (std::size_t p = 0; p < r.x.size() && home >= 0; ++p) {
+            if (rowOf(grid.index(r.x[p], r.x2[p])) != rowOf(home)) continue;
+            out[p] = interpolateAcrossSamples(x, u, along == 0 ? r.x[p] : r.x2[p], 1.5 * spacing);
+        }
+        return true;
+    }
+    return false;
+}
+
+CompareFVMResult compareGrid(const Setup& s, const ProfileTableData& t, const std::vector<Eigen::Vector3d>& centres,
+                             const std::vector<Eigen::Vector3d>& U, const std::string& time) {
+    CompareFVMResult r = newResult(s, t, time);
+    r.axis = axisFromLetter(t.names[0]);
+    r.axis2 = axisFromLetter(t.names[1]);
+    if (r.axis < 0 || r.axis2 == r.axis)
+        throw IoError(t.file + ": the first two columns '" + t.names[0] + " " + t.names[1] + "' are not two bin axes");
+    const std::string uName = std::string("u") + axisLetter(r.component);
+    const std::vector<double>& c0 = t.column(t.names[0]);
+    const std::vector<double>& c1 = t.column(t.names[1]);
+    const std::vector<double>& u = t.column(uName);
+    const std::vector<double>& e = t.column(uName + "Err");
+    const std::vector<double>& count = t.column("count");
+    const std::vector<double>& density = t.column("density");
+    BinGrid grid;
+    try {
+        grid = gridOfCentres(r.axis, r.axis2, c0, c1);
+    } catch (const std::invalid_argument& ex) {
+        throw IoError(t.file + ": " + ex.what());
+    }
+    const BinnedCells cells = binCells(centres, U, r.component, grid);
+    for (std::size_t k = 0; k < c0.size(); ++k) {
+        if (count[k] < 3.0) continue;
+        r.x.push_back(c0[k]);
+        r.x2.push_back(c1[k]);
+        r.uDPD.push_back(u[k]);
+        r.uDPDErr.push_back(e[k]);
+        r.uFVM.push_back(cells.mean(k));
+    }
+    r.field = compareOrFail(r, r.uFVM, (s.foamCase / s.foamTime / "U").string());
+
+    const std::string setsName = s.record.get<std::string>("setsName");
+    for (const std::string& name : s.record.get<std::vector<std::string>>("lines")) {
+        const fs::path file = s.foamCase / "postProcessing" / setsName / s.foamTime / (name + "_U.xy");
+        std::vector<double> values;
+        if (!gridLine(readFoamSampledLine(file.string()), grid, r, values)) {
+            r.skippedLines.push_back(name);
+            continue;
+        }
+        r.uLines[name] = values;
+        r.lines[name] = compareOrFail(r, values, file.string());
+    }
+
+    if (!(s.fluidDensity > 0.0))
+        s.dict.fail("fluidDensity", "a 2-D comparison needs the DPD fluid's number density (no system/randomEquilWallDict "
+                                    "or blockFrozenWallDict gives it)");
+    const double nu = s.record.get<double>("nu");
+    const double g = s.record.get<Eigen::Vector3d>("g")[r.component];
+    const double cellsPerBin = grid.width0() / meshCellSize(s.record, r.axis) * grid.width1() / meshCellSize(s.record, r.axis2);
+    try {
+        r.darcyDPD = darcyFromBins(density, u, e, s.fluidDensity, nu, g);
+        r.darcyFVM = darcyFromCells(cells, cellsPerBin, nu, g);
+    } catch (const std::invalid_argument& ex) {
+        throw IoError(t.file + " against " + r.foamCase + ": " + ex.what());
+    }
+    r.hasDarcy = true;
+    return r;
+}
+
+void putDarcy(Dictionary& d, const CompareFVMResult& r) {
+    d.setValue("porosityDPD", r.darcyDPD.porosity);
+    d.setValue("porosityFVM", r.darcyFVM.porosity);
+    d.setValue("superficialVelocityDPD", r.darcyDPD.superficialVelocity);
+    d.setValue("superficialVelocityDPDErr", r.darcyDPD.superficialVelocityErr);
+    d.setValue("superficialVelocityFVM", r.darcyFVM.superficialVelocity);
+    d.setValue("permeabilityDPD", r.darcyDPD.permeability);
+    d.setValue("permeabilityDPDErr", r.darcyDPD.permeabilityErr);
+    d.setValue("permeabilityFVM", r.darcyFVM.permeability);
+    d.setValue("permeabilityRatio", r.darcyDPD.permeability / r.darcyFVM.permeability);
+}
+
 void putMetrics(Dictionary& d, const ComparisonMetrics& m) {
     d.setValue("points", m.points);
     d.setValue("L2", m.L2);
@@ -229,11 +352,14 @@ void putMetrics(Dictionary& d, const ComparisonMetrics& m) {
 
 std::string profilesText(const CompareFVMResult& r) {
     std::ostringstream os;
-    os << std::setprecision(17) << "# " << axisLetter(r.axis) << " uDPD uDPDErr uFVM";
+    os << std::setprecision(17) << "# " << axisLetter(r.axis) << (r.axis2 >= 0 ? std::string(" ") + axisLetter(r.axis2) : "")
+       << " uDPD uDPDErr uFVM";
     for (const auto& [name, u] : r.uLines) os << " u_" << name;
     os << "\n";
     for (std::size_t i = 0; i < r.x.size(); ++i) {
-        os << r.x[i] << " " << r.uDPD[i] << " " << r.uDPDErr[i] << " " << r.uFVM[i];
+        os << r.x[i] << " ";
+        if (r.axis2 >= 0) os << r.x2[i] << " ";
+        os << r.uDPD[i] << " " << r.uDPDErr[i] << " " << r.uFVM[i];
         for (const auto& [name, u] : r.uLines) os << " " << u[i];
         os << "\n";
     }
@@ -247,8 +373,13 @@ void printResult(std::ostream& out, const CompareFVMResult& r) {
             << "  (noise L2 " << m.noiseL2 << ", " << m.points << " points)\n";
     };
     out << "Time = " << r.time << ": " << r.profileFile << " against " << r.foamCase << " at " << r.foamTime << ", u"
-        << axisLetter(r.component) << " across " << axisLetter(r.axis) << "\n";
+        << axisLetter(r.component) << (r.axis2 >= 0 ? " on the grid " : " across ") << axisLetter(r.axis)
+        << (r.axis2 >= 0 ? std::string(" ") + axisLetter(r.axis2) : "") << "\n";
     row("field", r.field);
+    if (r.hasDarcy)
+        out << "    Darcy              porosity DPD " << r.darcyDPD.porosity << " FVM " << r.darcyFVM.porosity
+            << "  permeability DPD " << r.darcyDPD.permeability << " +- " << r.darcyDPD.permeabilityErr << " FVM "
+            << r.darcyFVM.permeability << "  ratio " << r.darcyDPD.permeability / r.darcyFVM.permeability << "\n";
     for (const auto& [name, m] : r.lines) row("line " + name, m);
     for (const auto& name : r.skippedLines) out << "    line " << name << ": not along " << axisLetter(r.axis) << ", skipped\n";
 }
@@ -273,7 +404,8 @@ std::vector<CompareFVMResult> runCompareFVM(const CompareFVMOptions& o, std::ost
         const fs::path table = profileTable(s, o.caseDir, t.name);
         if (!fs::is_regular_file(table))
             throw IoError("no profile table " + table.string() + " (run profileBins first)");
-        results.push_back(compareTime(s, readProfileTable(table.string()), centres, U, t.name));
+        const ProfileTableData data = readProfileTable(table.string());
+        results.push_back(isGridTable(data) ? compareGrid(s, data, centres, U, t.name) : compareTime(s, data, centres, U, t.name));
     }
     if (results.empty())
         throw IoError("no time of case '" + o.caseDir + "' has postProcessing/profileBins/<time>/ (run profileBins first)");
@@ -287,6 +419,7 @@ std::vector<CompareFVMResult> runCompareFVM(const CompareFVMOptions& o, std::ost
         d.setValue("axis", std::string(axisLetter(r.axis)));
         d.setValue("component", std::string(axisLetter(r.component)));
         putMetrics(d, r.field);
+        if (r.hasDarcy) putDarcy(d, r);
         Dictionary& lines = d.subDictOrCreate("lines");
         for (const auto& [name, m] : r.lines) putMetrics(lines.subDictOrCreate(name), m);
         writeTextFileAtomically((dir / "profiles.dat").string(), profilesText(r), true);

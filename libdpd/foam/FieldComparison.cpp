@@ -73,6 +73,70 @@ LayerProfile layerAverage(const std::vector<Eigen::Vector3d>& centres, const std
     return p;
 }
 
+long BinGrid::index(double a, double b) const {
+    const double fa = (a - lo0) / width0(), fb = (b - lo1) / width1();
+    if (!(fa >= 0.0 && fa < n0 && fb >= 0.0 && fb < n1)) return -1;
+    return static_cast<long>(fa) + static_cast<long>(n0) * static_cast<long>(fb);
+}
+
+BinGrid gridOfCentres(int axis0, int axis1, const std::vector<double>& c0, const std::vector<double>& c1) {
+    if (c0.size() != c1.size() || c0.empty()) throw std::invalid_argument("the bin centre columns differ in length or are empty");
+    BinGrid g;
+    g.axis0 = axis0;
+    g.axis1 = axis1;
+    // The first coordinate runs fastest: n0 is the length of the first run of equal second coordinates.
+    std::size_t n0 = 1;
+    while (n0 < c1.size() && c1[n0] == c1[0]) ++n0;
+    if (c0.size() % n0 != 0) throw std::invalid_argument("the bin centres do not form a grid (rows of unequal length)");
+    g.n0 = static_cast<int>(n0);
+    g.n1 = static_cast<int>(c0.size() / n0);
+    const double w0 = n0 > 1 ? c0[1] - c0[0] : 1.0;
+    const double w1 = g.n1 > 1 ? c1[n0] - c1[0] : 1.0;
+    if (!(w0 > 0.0) || !(w1 > 0.0)) throw std::invalid_argument("the bin centres do not increase along the grid");
+    g.lo0 = c0[0] - 0.5 * w0;
+    g.hi0 = g.lo0 + g.n0 * w0;
+    g.lo1 = c1[0] - 0.5 * w1;
+    g.hi1 = g.lo1 + g.n1 * w1;
+    const double tol = 1e-6;
+    for (std::size_t k = 0; k < c0.size(); ++k) {
+        const std::size_t i = k % n0, j = k / n0;
+        if (std::abs(c0[k] - (g.lo0 + (i + 0.5) * w0)) > tol * w0 || std::abs(c1[k] - (g.lo1 + (j + 0.5) * w1)) > tol * w1)
+            throw std::invalid_argument("the bin centres do not form a regular grid, first axis fastest (row " +
+                                        std::to_string(k + 1) + ")");
+    }
+    return g;
+}
+
+double BinnedCells::mean(std::size_t bin) const {
+    return cells[bin] > 0 ? sum[bin] / static_cast<double>(cells[bin]) : std::numeric_limits<double>::quiet_NaN();
+}
+
+BinnedCells binCells(const std::vector<Eigen::Vector3d>& centres, const std::vector<Eigen::Vector3d>& U,
+                     int component, const BinGrid& grid) {
+    if (centres.size() != U.size())
+        throw std::invalid_argument("binCells: " + std::to_string(centres.size()) + " cell centres but " +
+                                    std::to_string(U.size()) + " velocities");
+    BinnedCells b;
+    b.sum.assign(grid.size(), 0.0);
+    b.cells.assign(grid.size(), 0);
+    for (std::size_t c = 0; c < centres.size(); ++c) {
+        const long k = grid.index(centres[c][grid.axis0], centres[c][grid.axis1]);
+        if (k < 0) continue;
+        b.sum[static_cast<std::size_t>(k)] += U[c][component];
+        ++b.cells[static_cast<std::size_t>(k)];
+    }
+    return b;
+}
+
+double interpolateAcrossSamples(const std::vector<double>& x, const std::vector<double>& v, double at, double maxGap) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (x.empty() || at < x.front() || at > x.back()) return nan;
+    if (x.size() == 1) return v.front();
+    const auto hi = std::upper_bound(x.begin(), x.end(), at);
+    const std::size_t k = hi == x.end() ? x.size() - 1 : static_cast<std::size_t>(hi - x.begin());
+    return x[k] - x[k - 1] > maxGap ? nan : interpolateLinear(x, v, at);
+}
+
 LayerProfile extendToBounds(const LayerProfile& p, double lo, double hi) {
     if (p.x.size() < 2) return p;
     LayerProfile e;

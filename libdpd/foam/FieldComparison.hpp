@@ -44,6 +44,39 @@ struct LayerProfile {
 LayerProfile layerAverage(const std::vector<Eigen::Vector3d>& centres, const std::vector<Eigen::Vector3d>& U,
                           int axis, int component, double tolerance);
 
+// A regular 2-D grid of bins over two box axes (a 2-D DPD profile's): bin (i, j) is entry i + n0 j.
+struct BinGrid {
+    int axis0 = 0, axis1 = 2;
+    int n0 = 1, n1 = 1;
+    double lo0 = 0.0, hi0 = 1.0, lo1 = 0.0, hi1 = 1.0;
+    std::size_t size() const { return static_cast<std::size_t>(n0) * static_cast<std::size_t>(n1); }
+    double width0() const { return (hi0 - lo0) / n0; }
+    double width1() const { return (hi1 - lo1) / n1; }
+    // The bin holding the point (a along axis0, b along axis1); -1 outside the grid.
+    long index(double a, double b) const;
+};
+
+// The grid of a table's bin centres (first coordinate fastest, as profileBins writes them):
+// std::invalid_argument when they do not form a regular grid in that order.
+BinGrid gridOfCentres(int axis0, int axis1, const std::vector<double>& c0, const std::vector<double>& c1);
+
+// The cells of a finite-volume field gathered into the bins of a grid: per bin the sum of one velocity
+// component over the cells whose centres lie in it, and their number. On a mesh finer than the bins
+// the mean (sum / cells) is the continuum's average over the bin's fluid, the quantity a DPD bin
+// measures (the mean over the fluid particles in it); a bin with no fluid cell has no value.
+struct BinnedCells {
+    std::vector<double> sum;
+    std::vector<long> cells;
+    double mean(std::size_t bin) const;   // NaN when the bin holds no cell
+};
+BinnedCells binCells(const std::vector<Eigen::Vector3d>& centres, const std::vector<Eigen::Vector3d>& U,
+                     int component, const BinGrid& grid);
+
+// Piecewise-linear interpolation of samples v(x), x increasing, that may have gaps (a sampled line
+// crossing solid, where OpenFOAM writes no point): NaN where the two samples around `at` are more than
+// maxGap apart, or outside.
+double interpolateAcrossSamples(const std::vector<double>& x, const std::vector<double>& v, double at, double maxGap);
+
 // The layer profile continued linearly from its two outermost layers out to lo and hi (the walls): the
 // half cell between a wall and the first cell centre, where the DPD bins next to the wall lie.
 LayerProfile extendToBounds(const LayerProfile& p, double lo, double hi);

@@ -2,7 +2,7 @@
 # makeFoamCase, OpenFOAM (blockMesh, topoSet, subsetMesh, simpleFoam, postProcess) and compareFVM end to
 # end on small generated cases: the channel's simpleFoam solution against the analytic parabola (no slip
 # and Navier slip) to solver precision, compareFVM's L2 on a DPD profile with a known error, a solid cut
-# from an image mask, and the errors for bad input.
+# from an image mask, compareFVM's 2-D field, line and Darcy comparison on it, and the errors for bad input.
 #   $1: the directory of the executables, $2: the source directory
 set -u
 bin=$1
@@ -111,7 +111,7 @@ printf 'P2\n4 4\n255\n255 255 255 255\n255 0 0 255\n255 0 0 255\n255 255 255 255
 sed -e '/^walls/,$d' "$c/constant/dpdProperties" > "$m/constant/dpdProperties"
 echo 'geometry { type imageMask; file "constant/geometry/mask.pgm"; solidValues (0); pixelSize 1; smooth no; extrudeAxis y; }' \
     >> "$m/constant/dpdProperties"
-printf '%s\nbox { min (0 0 0); max (4 1 4); }\nnu 0.5;\ncellSize 0.5;\nmaxIterations 50;\n' "$header" > "$m/system/makeFoamCaseDict"
+printf '%s\nbox { min (0 0 0); max (4 1 4); }\nnu 0.5;\ncellSize 0.5;\nmaxIterations 50;\nlines { row { start (0 0 0.5); end (4 0 0.5); nPoints 17; } }\n' "$header" > "$m/system/makeFoamCaseDict"
 "$bin/makeFoamCase" -case "$m" > "$work/log.make" 2>&1 || fail "makeFoamCase (mask): $(cat "$work/log.make")"
 "$m/simpleFoam/Allrun" > "$work/log.allrun" 2>&1 || fail "Allrun (mask): $(cat "$work/log.allrun")"
 "$py" - "$m/simpleFoam" <<'EOD' || fail "the solid cut is wrong"
@@ -128,6 +128,46 @@ print(f"{n} fluid cells, {inside.sum()} inside the solid")
 sys.exit(0 if n == 48 and not inside.any() else 1)
 EOD
 grep -q "solidWalls" "$m/simpleFoam/constant/polyMesh/boundary" || fail "no solidWalls patch after subsetMesh"
+
+# 4b. compareFVM on a 2-D DPD field (1 x 1 bins over the mask's 4 x 4 box) made from the continuum's own
+#     field: ux 5 % above simpleFoam's bin means, density 4 times each bin's fluid fraction. Known
+#     answers: field L2 = Linf = 0.05, meanVelocityRatio 1.05, both porosities 48/64, and the Darcy
+#     permeability ratio 1.05 exactly (u_s = sum of density x ux over 4 x 16 bins on one side, sum of
+#     the cells' ux over 64 cells on the other). The sampled row z = 0.5 is compared along its 4 bins.
+#     Without a fluid density (no builder dictionary, no fluidDensity) the 2-D comparison is refused.
+mkdir -p "$m/300" "$m/postProcessing/profileBins/300"
+"$py" - "$m/simpleFoam" > "$m/postProcessing/profileBins/300/flowField.dat" <<'EOD'
+import os, re, sys
+import numpy as np
+case = sys.argv[1]
+t = max((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and float(d) > 0), key=float)
+C, U = [np.array(re.findall(r"\(([-+0-9.eE]+) ([-+0-9.eE]+) ([-+0-9.eE]+)\)", open(f"{case}/{t}/{name}").read().split("internalField")[1].split("boundaryField")[0]), float)
+        for name in ("C", "U")]
+s, n = np.zeros((4, 4)), np.zeros((4, 4))
+np.add.at(s, (C[:, 2].astype(int), C[:, 0].astype(int)), U[:, 0])
+np.add.at(n, (C[:, 2].astype(int), C[:, 0].astype(int)), 1)
+print("# x z density densityErr ux uxErr uy uyErr uz uzErr kT kTErr count")
+for k in range(4):
+    for i in range(4):
+        u = 1.05 * s[k, i] / n[k, i] if n[k, i] else 0.0
+        print(i + 0.5, k + 0.5, n[k, i], 0.01, u, 1e-4, 0, 0, 0, 0, 1, 0.01, 1000 * n[k, i])
+EOD
+printf '%s\nprofile flowField;\n' "$header" > "$m/system/compareFVMDict"
+"$bin/compareFVM" -case "$m" -latestTime > "$work/log" 2>&1
+expectError $? "$work/log" "compareFVMDict" "fluidDensity"
+printf '%s\nprofile flowField;\nfluidDensity 4;\n' "$header" > "$m/system/compareFVMDict"
+"$bin/compareFVM" -case "$m" -latestTime > "$work/log.compare" 2>&1 || fail "compareFVM (2-D): $(cat "$work/log.compare")"
+"$py" - "$m/postProcessing/compareFVM/300/compare.dat" <<'EOD' || fail "compareFVM's 2-D metrics are off: $(cat "$m/postProcessing/compareFVM/300/compare.dat")"
+import re, sys
+text = open(sys.argv[1]).read()
+head, _, lines = text.partition("lines")
+get = lambda k, t=head: float(re.search(rf"^\s*{k}\s+([-+0-9.eE]+);", t, re.M).group(1))
+ok = abs(get("L2") - 0.05) < 1e-12 and abs(get("Linf") - 0.05) < 1e-12 and abs(get("meanVelocityRatio") - 1.05) < 1e-12
+ok = ok and get("points") == 12 and abs(get("porosityDPD") - 0.75) < 1e-12 and abs(get("porosityFVM") - 0.75) < 1e-12
+ok = ok and abs(get("permeabilityRatio") - 1.05) < 1e-12 and get("permeabilityFVM") > 0
+ok = ok and "row" in lines and get("points", lines) == 4
+sys.exit(0 if ok else 1)
+EOD
 
 # 5. Bad input: clear messages naming the file, non-zero status, nothing written.
 b=$work/bad
