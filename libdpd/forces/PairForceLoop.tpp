@@ -127,7 +127,7 @@ inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const 
     for (std::size_t k = gathered; k < n; ++k) {
         const std::uint32_t i = bi[k], j = bj[k];
         if constexpr (kVelocity)
-            rDotV[k] = bdx[k] * (vx[i] - vx[j]) + bdy[k] * (vy[i] - vy[j]) + bdz[k] * (vz[i] - vz[j]);
+            rDotV[k] = separationDotRelativeVelocity(bdx[k], bdy[k], bdz[k], vx[i] - vx[j], vy[i] - vy[j], vz[i] - vz[j]);
         if constexpr (kRandom) {
             const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
             idLo[k] = static_cast<std::uint32_t>(lo);

@@ -2,8 +2,10 @@
 // What the pair force needs of the two particles beyond their separation, gathered for four pairs at
 // a time with AVX2 gather instructions: the relative velocity along the separation,
 // (r_i - r_j).(v_i - v_j), and the pair's ids ordered (lower first, cut to 32 bits), which key its
-// random number. The same numbers to the bit as the scalar loop of PairForceLoop.tpp (the dot product
-// is summed in the same order, with the same fused multiply-adds).
+// random number. The same numbers to the bit as the scalar form below (the dot product summed in the
+// same order with the same fused multiply-adds, written out so that no compiler contracts it its own
+// way), which the pair loop uses for the last pairs of a batch.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -13,6 +15,11 @@
 
 namespace dpd {
 namespace detail {
+
+// (r_i - r_j).(v_i - v_j) from the separation d and the velocity difference dv.
+inline double separationDotRelativeVelocity(double dx, double dy, double dz, double dvx, double dvy, double dvz) {
+    return std::fma(dz, dvz, std::fma(dx, dvx, dy * dvy));
+}
 
 struct PairGatherInput {
     const double *vx, *vy, *vz;
@@ -47,9 +54,10 @@ inline std::size_t gatherPairKinematics(const PairGatherInput& in, const PairGat
             const __m256d dvx = _mm256_sub_pd(gather(in.vx, i), gather(in.vx, j));
             const __m256d dvy = _mm256_sub_pd(gather(in.vy, i), gather(in.vy, j));
             const __m256d dvz = _mm256_sub_pd(gather(in.vz, i), gather(in.vz, j));
+            // As separationDotRelativeVelocity, rounding for rounding.
             const __m256d dot = _mm256_fmadd_pd(
                 _mm256_loadu_pd(in.dz + k), dvz,
-                _mm256_fmadd_pd(_mm256_loadu_pd(in.dy + k), dvy, _mm256_mul_pd(_mm256_loadu_pd(in.dx + k), dvx)));
+                _mm256_fmadd_pd(_mm256_loadu_pd(in.dx + k), dvx, _mm256_mul_pd(_mm256_loadu_pd(in.dy + k), dvy)));
             _mm256_storeu_pd(out.rDotV + k, dot);
         }
         if constexpr (kRandom) {
