@@ -17,8 +17,13 @@ namespace dpd {
 namespace detail {
 
 // (r_i - r_j).(v_i - v_j) from the separation d and the velocity difference dv.
+// Without FMA hardware (and so without AVX2) std::fma would be a slow library call: the plain sum.
 inline double separationDotRelativeVelocity(double dx, double dy, double dz, double dvx, double dvy, double dvz) {
+#if defined(__FMA__)
     return std::fma(dz, dvz, std::fma(dx, dvx, dy * dvy));
+#else
+    return dx * dvx + dy * dvy + dz * dvz;
+#endif
 }
 
 struct PairGatherInput {
