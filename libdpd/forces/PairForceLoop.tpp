@@ -1,5 +1,6 @@
 // Implementation of accumulatePairForces (included by PairForceLoop.hpp).
 #include "forces/PairBatch.hpp"
+#include "forces/PairGather.hpp"
 #include "forces/PairLoopPlan.hpp"
 #include "forces/PairSearch.hpp"
 
@@ -120,22 +121,25 @@ inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const 
     double* __restrict cs = batch.sigma.data();
     constexpr bool kRandom = EvaluatorUsesRandom<Evaluator>::value;
     constexpr bool kVelocity = EvaluatorUsesVelocity<Evaluator>::value;
-    for (std::size_t k = 0; k < n; ++k) {
+    // Four pairs at a time with AVX2 gathers (PairGather.hpp), the rest here.
+    const std::size_t gathered = gatherPairKinematics<kVelocity, kRandom>(
+        {vx, vy, vz, id, bi, bj, bdx, bdy, bdz}, {rDotV, idLo, idHi}, n);
+    for (std::size_t k = gathered; k < n; ++k) {
         const std::uint32_t i = bi[k], j = bj[k];
         if constexpr (kVelocity)
-            rDotV[k] = bdx[k] * (vx[i] - vx[j]) + bdy[k] * (vy[i] - vy[j]) + bdz[k] * (vz[i] - vz[j]);
-        else
-            rDotV[k] = 0.0;
+            rDotV[k] = separationDotRelativeVelocity(bdx[k], bdy[k], bdz[k], vx[i] - vx[j], vy[i] - vy[j], vz[i] - vz[j]);
         if constexpr (kRandom) {
             const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
             idLo[k] = static_cast<std::uint32_t>(lo);
             idHi[k] = static_cast<std::uint32_t>(hi);
         }
-        if constexpr (!kCommon) {
-            const PairCoeffs& c = ctx.table(sp[i], sp[j]);
+    }
+    if constexpr (!kVelocity) std::fill(rDotV, rDotV + n, 0.0);
+    if constexpr (!kCommon)
+        for (std::size_t k = 0; k < n; ++k) {
+            const PairCoeffs& c = ctx.table(sp[bi[k]], sp[bj[k]]);
             ca[k] = c.a; cg[k] = c.gamma; cs[k] = c.sigma;
         }
-    }
     double* __restrict zeta = batch.zeta.data();
     // The partial evaluators of the split integrators ignore zeta: no Philox for them.
     if constexpr (kRandom) ctx.random.orderedPairUniforms(ctx.step, idLo, idHi, zeta, n);

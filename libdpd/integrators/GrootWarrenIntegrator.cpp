@@ -1,5 +1,6 @@
 #include "integrators/GrootWarrenIntegrator.hpp"
 
+#include "integrators/ForEachParticle.hpp"
 #include "integrators/StepParts.hpp"
 #include "run/System.hpp"
 
@@ -9,29 +10,26 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
     Particles& p = sys.particles;
     const double dt = sys.dt();
     const double halfDt = 0.5 * dt;
-    const auto& frozen = sys.frozenOfSpecies();
     const long n = static_cast<long>(p.size());
     halfKickAndDrift(sys);
     const WallCounters walls = endMove(sys);
     // Keep v + dt f / 2 aside and predict v~ = v + lambda dt f = (v + dt f / 2) + (lambda - 1/2) dt f.
     hx_.resize(n); hy_.resize(n); hz_.resize(n);
     const double predict = (lambda_ - 0.5) * dt;
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
+    forEachParticle(sys, [&](long i, auto mobile) {
         hx_[i] = p.vx[i]; hy_[i] = p.vy[i]; hz_[i] = p.vz[i];
-        if (frozen[p.species[i]]) continue;
+        if (!mobile) return;
         p.vx[i] += predict * p.fx[i];
         p.vy[i] += predict * p.fy[i];
         p.vz[i] += predict * p.fz[i];
-    }
+    });
     sys.computeForces();
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (frozen[p.species[i]]) continue;  // the predictor left a frozen particle's velocity alone
+    forEachParticle(sys, [&](long i, auto mobile) {
+        if (!mobile) return;  // the predictor left a frozen particle's velocity alone
         p.vx[i] = hx_[i] + halfDt * p.fx[i];
         p.vy[i] = hy_[i] + halfDt * p.fy[i];
         p.vz[i] = hz_[i] + halfDt * p.fz[i];
-    }
+    });
     sys.completeWalls();
     return walls;
 }

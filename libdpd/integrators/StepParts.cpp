@@ -1,20 +1,17 @@
 #include "integrators/StepParts.hpp"
 
-#include "run/System.hpp"
+#include "integrators/ForEachParticle.hpp"
 
 namespace dpd {
 
 void kick(System& sys, double h) {
     Particles& p = sys.particles;
-    const auto& frozen = sys.frozenOfSpecies();
-    const long n = static_cast<long>(p.size());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (frozen[p.species[i]]) continue;
+    forEachParticle(sys, [&](long i, auto mobile) {
+        if (!mobile) return;
         p.vx[i] += h * p.fx[i];
         p.vy[i] += h * p.fy[i];
         p.vz[i] += h * p.fz[i];
-    }
+    });
 }
 
 void drift(System& sys) {
@@ -33,21 +30,21 @@ void halfKickAndDrift(System& sys) {
     Particles& p = sys.particles;
     const double dt = sys.dt();
     const double halfDt = 0.5 * dt;
-    const auto& frozen = sys.frozenOfSpecies();
-    const long n = static_cast<long>(p.size());
     // One pass: r + dt (v + dt f / 2) is r + dt v + dt^2 f / 2. The half-kicked velocity is what a
     // wall reflects, since it is the velocity the particle carries on with.
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (!frozen[p.species[i]]) {
-            p.vx[i] += halfDt * p.fx[i];
-            p.vy[i] += halfDt * p.fy[i];
-            p.vz[i] += halfDt * p.fz[i];
+    double *rx = p.rx.data(), *ry = p.ry.data(), *rz = p.rz.data();
+    double *vx = p.vx.data(), *vy = p.vy.data(), *vz = p.vz.data();
+    const double *fx = p.fx.data(), *fy = p.fy.data(), *fz = p.fz.data();
+    forEachParticle(sys, [=](long i, auto mobile) {
+        if (mobile) {
+            vx[i] += halfDt * fx[i];
+            vy[i] += halfDt * fy[i];
+            vz[i] += halfDt * fz[i];
         }
-        p.rx[i] += dt * p.vx[i];
-        p.ry[i] += dt * p.vy[i];
-        p.rz[i] += dt * p.vz[i];
-    }
+        rx[i] += dt * vx[i];
+        ry[i] += dt * vy[i];
+        rz[i] += dt * vz[i];
+    });
 }
 
 WallCounters endMove(System& sys) {

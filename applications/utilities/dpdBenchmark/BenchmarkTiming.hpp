@@ -22,7 +22,7 @@ struct BenchmarkResult {
     std::size_t particles = 0;
     int threads = 1;
     double rate = 0.0;        // particle-steps per second, best segment, wall clock
-    double cpuRate = 0.0;     // particle-steps per second of CPU time x threads (descheduled time left out)
+    double cpuRate = 0.0;     // particle-steps per second of CPU time x threads, segment of least CPU time
     double spread = 0.0;      // worst segment time / best segment time - 1
     double msPerStep = 0.0;   // best segment
     // Fractions of the best segment's time.
