@@ -131,7 +131,10 @@ def local_pore_size(dist):
     return size
 
 
-def class_table(key, edges, ud, uf, err):
+def class_table(key, edges, ud, uf, err, rho, whole):
+    """Per class of key: bins, L2, noise L2, flow ratio DPD/FVM, mean FVM velocity, and the mean DPD
+    density of the class's bins that lie wholly in the fluid (whole; nan where none do): a throat the
+    walls' repulsion reaches across is depleted, which the continuum does not know."""
     rows = []
     for lo, hi in zip(edges[:-1], edges[1:]):
         sel = (key >= lo) & (key < hi) & np.isfinite(uf) & np.isfinite(ud)
@@ -139,7 +142,9 @@ def class_table(key, edges, ud, uf, err):
             continue
         l2 = np.sqrt(np.sum((ud[sel] - uf[sel]) ** 2) / np.sum(uf[sel] ** 2))
         noise = np.sqrt(np.sum(err[sel] ** 2) / np.sum(uf[sel] ** 2))
-        rows.append((lo, hi, int(sel.sum()), l2, noise, ud[sel].sum() / uf[sel].sum(), uf[sel].mean()))
+        dense = sel & whole
+        density = rho[dense].mean() if dense.any() else float("nan")
+        rows.append((lo, hi, int(sel.sum()), l2, noise, ud[sel].sum() / uf[sel].sum(), uf[sel].mean(), density))
     return rows
 
 
@@ -198,8 +203,9 @@ def main():
     u_wall_dpd, u_wall_fvm = grid["ux"][near].mean(), ufx[near].mean()
 
     # Where they disagree: by local pore size and by distance to the solid.
-    by_pore = class_table(pore[compared], [0, 3, 5, 8, 12, 1e9], ud, uf, ue)
-    by_dist = class_table(dist[compared], [0, 0.75, 1.5, 3, 1e9], ud, uf, ue)
+    rho_c, whole_c = grid["density"][compared], (fvm_fraction == 1)[compared]
+    by_pore = class_table(pore[compared], [0, 3, 5, 8, 12, 1e9], ud, uf, ue, rho_c, whole_c)
+    by_dist = class_table(dist[compared], [0, 0.75, 1.5, 3, 1e9], ud, uf, ue, rho_c, whole_c)
     worst = max(by_pore, key=lambda r: r[3])
 
     ratio_super = cmp["permeabilityRatio"]
@@ -245,12 +251,12 @@ def main():
         f.write(f"superficialVelocity DPD {cmp['superficialVelocityDPD']:.6f} +- {cmp['superficialVelocityDPDErr']:.6f}  simpleFoam {cmp['superficialVelocityFVM']:.6f}\n")
         f.write(f"permeabilityDPD    {cmp['permeabilityDPD']:.5f} +- {cmp['permeabilityDPDErr']:.5f}\n")
         f.write(f"permeabilityFVM    {cmp['permeabilityFVM']:.5f}\npermeabilityRatio  {ratio_super:.5f}\n")
-        f.write("# by local pore size (diameter of the largest fluid disc covering the bin): lo hi bins L2 noiseL2 meanRatio uFVMmean\n")
+        f.write("# by local pore size (diameter of the largest fluid disc covering the bin): lo hi bins L2 noiseL2 meanRatio uFVMmean densityWholeBins\n")
         for r in by_pore:
-            f.write(f"poreSize  {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f}\n")
-        f.write("# by distance from the bin centre to the solid: lo hi bins L2 noiseL2 meanRatio uFVMmean\n")
+            f.write(f"poreSize  {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f} {r[7]:.3f}\n")
+        f.write("# by distance from the bin centre to the solid: lo hi bins L2 noiseL2 meanRatio uFVMmean densityWholeBins\n")
         for r in by_dist:
-            f.write(f"wallDistance {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f}\n")
+            f.write(f"wallDistance {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f} {r[7]:.3f}\n")
         f.write(f"worstPoreClass     {worst[0]:g}-{worst[1]:g}: L2 {worst[3]:.4f}, mean ratio {worst[5]:.4f}\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
