@@ -201,12 +201,7 @@ double firstMobileGamma(const DpdModel& m) {
 // The component fitted: as given, or the one axis the walls slide along.
 int couetteComponent(const FitSlipLengthSetup& s) {
     const Dictionary& d = s.dict;
-    if (d.found("component")) {
-        const std::string c = d.get<std::string>("component");
-        const int a = axisFromName(c);
-        if (a < 0) d.fail("component", "expected x, y or z, not '" + c + "'");
-        return a;
-    }
+    if (d.found("component")) return d.getAxis("component");
     const int a = wallSlidingAxis(s.model);
     if (a < 0)
         d.fail("component", "not given, and the walls of " + s.dpdProperties.fileName() +
@@ -214,20 +209,11 @@ int couetteComponent(const FitSlipLengthSetup& s) {
     return a;
 }
 
-// A (low high) entry with high > low: fitRange, wallPositions.
-std::pair<double, double> readIncreasingPair(const Dictionary& d, const std::string& key, const std::string& low,
-                                             const std::string& high) {
-    const std::vector<double> pair = d.get<std::vector<double>>(key);
-    if (pair.size() != 2 || !(pair[1] > pair[0]))
-        d.fail(key, "expected (" + low + " " + high + ") with " + high + " > " + low);
-    return {pair[0], pair[1]};
-}
-
 // wallPositions (low high): the channel's walls when they belong to a geometry block.
 void readWallPositions(FitSlipLengthSetup& s) {
     if (!s.dict.found("wallPositions")) return;
     s.hasWallPositions = true;
-    std::tie(s.wallLow, s.wallHigh) = readIncreasingPair(s.dict, "wallPositions", "lower", "upper");
+    std::tie(s.wallLow, s.wallHigh) = s.dict.getIncreasingPair("wallPositions", "lower", "upper");
 }
 
 void readCouetteSetup(FitSlipLengthSetup& s) {
@@ -238,7 +224,7 @@ void readCouetteSetup(FitSlipLengthSetup& s) {
     if (d.found("fitRange")) {
         if (d.found("exclude")) d.fail("fitRange", "give either fitRange or exclude, not both");
         s.hasFitRange = true;
-        std::tie(s.fitLow, s.fitHigh) = readIncreasingPair(d, "fitRange", "low", "high");
+        std::tie(s.fitLow, s.fitHigh) = d.getIncreasingPair("fitRange", "low", "high");
     }
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : s.model.cutoff;
 }
@@ -284,9 +270,7 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     }
 
     if (d.found("component")) {
-        const std::string c = d.get<std::string>("component");
-        s.component = axisFromName(c);
-        if (s.component < 0) d.fail("component", "expected x, y or z, not '" + c + "'");
+        s.component = d.getAxis("component");
     } else {
         int nonzero = 0;
         for (int a = 0; a < 3; ++a)

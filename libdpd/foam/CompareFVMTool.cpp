@@ -115,8 +115,7 @@ Setup readSetup(const CompareFVMOptions& o) {
                                            : " (did simpleFoam run?)"));
 
     if (d.found("component")) {
-        s.component = axisFromLetter(d.get<std::string>("component"));
-        if (s.component < 0) d.fail("component", "expected x, y or z");
+        s.component = d.getAxis("component");
     } else {
         const Eigen::Vector3d g = s.record.get<Eigen::Vector3d>("g");
         int nonzero = 0;

@@ -15,9 +15,7 @@ namespace {
 constexpr double kBandInCutoffs = 2.0;
 
 int readExtrudeAxis(const Dictionary& d, const Box& box) {
-    const std::string s = d.getOrDefault("extrudeAxis", "y");
-    const int axis = s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1;
-    if (axis < 0) d.fail("extrudeAxis", "expected x, y or z, not '" + s + "'");
+    const int axis = d.found("extrudeAxis") ? d.getAxis("extrudeAxis") : 1;
     if (box.dimension == 2 && axis != 1)
         d.fail("extrudeAxis", "a 2-D scene lies in the x-z plane: the geometry is extruded along y");
     return axis;

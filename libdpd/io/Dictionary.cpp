@@ -580,6 +580,22 @@ int Dictionary::lineOf(const std::string& key) const {
     return e->line;
 }
 
+int Dictionary::getAxis(const std::string& key) const {
+    const std::string s = get<std::string>(key);
+    if (s == "x") return 0;
+    if (s == "y") return 1;
+    if (s == "z") return 2;
+    fail(key, "expected x, y or z, not '" + s + "'");
+}
+
+std::pair<double, double> Dictionary::getIncreasingPair(const std::string& key, const std::string& lowName,
+                                                        const std::string& highName) const {
+    const std::vector<double> pair = get<std::vector<double>>(key);
+    if (pair.size() != 2 || !(pair[1] > pair[0]))
+        fail(key, "expected (" + lowName + " " + highName + ") with " + highName + " > " + lowName);
+    return {pair[0], pair[1]};
+}
+
 std::string Dictionary::rawValue(const std::string& key) const {
     const DictEntry* e = findEntry(key);
     if (!e) missing(key, "a value");

@@ -23,6 +23,7 @@
 
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace dpd {
@@ -77,6 +78,12 @@ public:
     T getPositive(const std::string& key) const;
     template <class T>
     T getNonNegative(const std::string& key) const;
+    // A box axis written as its letter: x, y or z -> 0, 1, 2 ("expected x, y or z, not '...'").
+    int getAxis(const std::string& key) const;
+    // A list (low high) with high > low; lowName and highName word the error ("expected (lower upper)
+    // with upper > lower").
+    std::pair<double, double> getIncreasingPair(const std::string& key, const std::string& lowName,
+                                                const std::string& highName) const;
 
     // Any keyword of this dictionary that is not in allowed -> InputError "unknown keyword" naming
     // its line and listing the allowed keywords (with a "did you mean" for near misses).

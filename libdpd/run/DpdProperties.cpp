@@ -16,14 +16,6 @@ namespace dpd {
 
 namespace {
 
-int axisFromName(const Dictionary& d, const std::string& key) {
-    const std::string s = d.get<std::string>(key);
-    if (s == "x") return 0;
-    if (s == "y") return 1;
-    if (s == "z") return 2;
-    d.fail(key, "expected x, y or z, not '" + s + "'");
-}
-
 SpeciesTable readSpecies(const Dictionary& d) {
     const Dictionary& sd = d.subDict("species");
     SpeciesTable table;
@@ -137,7 +129,7 @@ BodyForce readBodyForce(const Dictionary& d, int dimension) {
     f.g = bd.get<Eigen::Vector3d>("value");
     if (dimension == 2 && f.g.y() != 0.0) bd.fail("value", "a 2-D scene lies in the x-z plane: the y component must be 0");
     if (f.type == BodyForce::Type::reversePoiseuille) {
-        f.gradientAxis = axisFromName(bd, "gradientAxis");
+        f.gradientAxis = bd.getAxis("gradientAxis");
         if (f.g[f.gradientAxis] != 0.0) bd.fail("value", "must be perpendicular to gradientAxis");
     }
     return f;

@@ -6,7 +6,7 @@
 
 #include <cmath>
 #include <string>
-#include <vector>
+#include <tuple>
 
 namespace dpd {
 
@@ -37,13 +37,8 @@ void channelFromPositions(const Dictionary& d, const DpdModel& model, InitialFlo
     if (!model.walls.empty())
         d.fail("wallPositions", "constant/dpdProperties has planar walls: the start uses theirs; wallPositions is for "
                                 "the walls of a geometry block");
-    const std::string axis = d.get<std::string>("axis");
-    if (axis != "x" && axis != "y" && axis != "z") d.fail("axis", "expected x, y or z, not '" + axis + "'");
-    const std::vector<double> walls = d.get<std::vector<double>>("wallPositions");
-    if (walls.size() != 2 || !(walls[1] > walls[0])) d.fail("wallPositions", "expected (lower upper) with upper > lower");
-    flow.axis = axis[0] - 'x';
-    flow.lower = walls[0];
-    flow.upper = walls[1];
+    flow.axis = d.getAxis("axis");
+    std::tie(flow.lower, flow.upper) = d.getIncreasingPair("wallPositions", "lower", "upper");
     channelBodyForce(d, model, flow.axis, flow);
 }
 

@@ -11,7 +11,6 @@
 #include "run/ThreadBudget.hpp"
 #include "sampling/FunctionObjects.hpp"
 
-#include <omp.h>
 
 #include <chrono>
 #include <cmath>
@@ -90,10 +89,6 @@ void printWalls(std::ostream& log, const System& sys) {
     }
 }
 
-struct ThreadUse {
-    int available = 1, used = 1;
-};
-
 void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const ThreadUse& threads,
                  const Integrator& integrator,
                  const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes) {
@@ -131,9 +126,7 @@ public:
         FunctionObjects functions = FunctionObjects::read(control.functions, sys);
         const auto integrator = makeIntegrator(model.integrator);
         if (sys.time > 0.0) functions.restore((fs::path(caseDir_) / start).string());
-        ThreadUse threads;
-        threads.available = omp_get_max_threads();
-        threads.used = useThreadsForParticles(sys.particles.size());
+        const ThreadUse threads = useThreadsForParticles(sys.particles.size());
         const bool restartForces = forcesStored(sys.particles);
         sys.sortByCell();
         if (!restartForces) sys.computeForces();

@@ -11,10 +11,12 @@ int threadsForParticles(std::size_t particles, int available) {
     return std::max(1, std::min(available, worth));
 }
 
-int useThreadsForParticles(std::size_t particles) {
-    const int threads = threadsForParticles(particles, omp_get_max_threads());
-    omp_set_num_threads(threads);
-    return threads;
+ThreadUse useThreadsForParticles(std::size_t particles) {
+    ThreadUse use;
+    use.available = omp_get_max_threads();
+    use.used = threadsForParticles(particles, use.available);
+    omp_set_num_threads(use.used);
+    return use;
 }
 
 }  // namespace dpd

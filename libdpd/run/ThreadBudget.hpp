@@ -20,8 +20,13 @@ constexpr std::size_t kParticlesPerThread = 4000;
 // min(available, max(1, particles / kParticlesPerThread)).
 int threadsForParticles(std::size_t particles, int available);
 
-// Sets the OpenMP thread count for a run of that many particles and returns it. It only ever lowers
-// the count (what is available is the current maximum): call it once per run, as the tools do.
-int useThreadsForParticles(std::size_t particles);
+struct ThreadUse {
+    int available = 1;   // OpenMP's maximum before the call
+    int used = 1;        // what the run uses
+};
+
+// Sets the OpenMP thread count for a run of that many particles. It only ever lowers the count (what
+// is available is the current maximum): call it once per run, as the tools do.
+ThreadUse useThreadsForParticles(std::size_t particles);
 
 }  // namespace dpd

@@ -14,9 +14,7 @@ namespace dpd {
 namespace {
 
 int readAxis(const Dictionary& d, const System& sys, const std::string& key = "axis") {
-    const std::string s = d.get<std::string>(key);
-    const int axis = s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1;
-    if (axis < 0) d.fail(key, "expected x, y or z, not '" + s + "'");
+    const int axis = d.getAxis(key);
     if (!sys.box.isActiveAxis(axis)) d.fail(key, "a 2-D scene has no y axis");
     return axis;
 }
