@@ -18,8 +18,11 @@ results.dat also gives
     step qualifies. Speed-up = cost(GW at 0.02) / cost(method at that step), cost being seconds per
     particle per time unit.
 
-Cost is CPU time (all threads) per particle per time unit, so that other jobs on the machine do not
-inflate it.
+Cost is CPU time (all threads) per particle per time unit. A step costs the same whatever dt, so each
+integrator's cost per particle-step is taken as the median over its stable runs (CPU time per particle
+per time unit times dt), and its cost per time unit at dt as that median over dt: one run slowed by
+other jobs on the machine (CPU time still grows when they contend for caches and memory) then moves
+nothing. The per-run costs stay in the table; results.dat gives the medians and their spread.
 """
 import math
 import sys
@@ -50,11 +53,60 @@ def read_rows(path):
             p = dict(dt=values["dt"], cost=values["cost"], unstable=int(values["unstable"]) == 1,
                      kT=values["kT"], kTse=values["kTse"], P=values["P"], Pse=values["Pse"],
                      nu=values["nuRel"], nuse=values["nuRelSe"], pressure=values["pressure"],
-                     viscosity=values["nu"])
+                     viscosity=values["nu"], viscositySe=values["nuSe"])
             rows.setdefault(fields[0], []).append(p)
     for label in rows:
         rows[label].sort(key=lambda r: r["dt"])
     return rows, reference
+
+
+def viscosity_reference(rows, max_dt=0.01, max_kt_error=0.01):
+    """The viscosity every run is compared with: the weighted mean of the runs at dt <= max_dt whose kT
+    error is within max_kt_error (their step error is far below the statistical one), instead of one
+    run's value. Their scatter about the mean also calibrates the runs' error bars: the fit's standard
+    errors come from blocks only about twice the slowest mode's decay time, so they run small; the
+    Birge ratio sqrt(chi^2 / (n - 1)) (at least 1) scales every viscosity error bar.
+    Returns (reference, its standard error, Birge ratio, runs used)."""
+    used = [p for points in rows.values() for p in points
+            if p["dt"] <= max_dt + 1e-12 and not p["unstable"] and abs(p["kT"]) <= max_kt_error
+            and not math.isnan(p["viscosity"]) and p["viscositySe"] > 0]
+    if len(used) < 2:
+        return None
+    w = np.array([1.0 / p["viscositySe"] ** 2 for p in used])
+    nu = np.array([p["viscosity"] for p in used])
+    mean = float(np.sum(w * nu) / np.sum(w))
+    birge = max(1.0, math.sqrt(float(np.sum(w * (nu - mean) ** 2)) / (len(used) - 1)))
+    return mean, birge / math.sqrt(float(np.sum(w))), birge, len(used)
+
+
+def apply_viscosity_reference(rows, ref):
+    """Viscosity errors against the pooled reference, with Birge-scaled error bars."""
+    mean, mean_se, birge, _ = ref
+    for points in rows.values():
+        for p in points:
+            if math.isnan(p["viscosity"]):
+                continue
+            p["nu"] = p["viscosity"] / mean - 1.0
+            p["nuse"] = math.hypot(birge * p["viscositySe"] / mean, p["viscosity"] * mean_se / mean ** 2)
+
+
+def step_costs(rows):
+    """Per integrator: (median, lowest, highest) CPU seconds per particle-step over its stable runs."""
+    costs = {}
+    for label, points in rows.items():
+        per_step = sorted(p["cost"] * p["dt"] for p in points if not p["unstable"] and not math.isnan(p["cost"]))
+        if per_step:
+            costs[label] = (float(np.median(per_step)), per_step[0], per_step[-1])
+    return costs
+
+
+def apply_cost_model(rows, costs):
+    """Replaces each stable run's measured cost by its integrator's median step cost over dt."""
+    for label, points in rows.items():
+        for p in points:
+            p["measuredCost"] = p["cost"]
+            if label in costs and not p["unstable"]:
+                p["cost"] = costs[label][0] / p["dt"]
 
 
 def measured(p, q):
@@ -115,14 +167,23 @@ def equal_accuracy_step(points, base, quantities):
     return best
 
 
-def plot(rows, reference):
+def reference_names(reference, nu_ref):
+    """What the pressure and the viscosity errors are taken against."""
+    viscosity = reference or "the reference"
+    if nu_ref:
+        viscosity = "pooled nu %.4f +- %.4f (%d runs at dt <= 0.01)" % (nu_ref[0], nu_ref[1], nu_ref[3])
+    return {"P": reference or "the reference", "nu": viscosity}
+
+
+def plot(rows, reference, nu_ref):
+    against_of = reference_names(reference, nu_ref)
     fig, axes = plt.subplots(2, 2, figsize=(13, 10))
     panels = list(zip(axes.flat[:3], QUANTITIES))
     markers = "osD^v<>"
     for k, (label, points) in enumerate(rows.items()):
         for ax, (q, name) in panels:
-            # The reference run's own pressure and viscosity errors are zero by definition: not drawn.
-            ok = [p for p in points if measured(p, q) and not (q != "kT" and p[q] == 0.0)]
+            # The reference run's own pressure error is zero by definition: not drawn.
+            ok = [p for p in points if measured(p, q) and not (q == "P" and p[q] == 0.0)]
             if not ok:
                 continue
             cost = np.array([p["cost"] for p in ok])
@@ -136,9 +197,9 @@ def plot(rows, reference):
         ax.set_yscale("log")
         ax.axhline(1, color="tab:green", lw=0.8, ls="--")
         ax.axhline(5, color="tab:orange", lw=0.8, ls="--")
-        ax.set_xlabel("cost: CPU seconds per particle per time unit")
+        ax.set_xlabel("cost: CPU seconds per particle per time unit (median step cost / dt)")
         ax.set_ylabel("|%s error| (%%)  (labels: dt)" % name)
-        against = "set kT" if q == "kT" else (reference or "the reference")
+        against = "set kT" if q == "kT" else against_of[q]
         ax.set_title("%s error against cost (against %s)" % (name, against), fontsize=10)
         ax.legend(fontsize=7)
     ax2 = axes.flat[3]
@@ -164,8 +225,16 @@ def fmt(x):
     return "-" if x is None else "%g" % x
 
 
-def results(rows, reference):
-    lines = ["# Stability map and recommended step (kT error; crossings interpolated between measured steps,",
+def results(rows, reference, costs, nu_ref):
+    lines = ["# Cost per particle-step (CPU seconds; median, lowest and highest over the stable runs; the",
+             "# cost of one time unit at dt is the median over dt)",
+             "# integrator median lowest highest"]
+    for label, (median, low, high) in costs.items():
+        lines.append("%-16s %-10.3g %-10.3g %.3g" % (label, median, low, high))
+    if nu_ref:
+        lines += ["#", "# Viscosity reference: weighted mean of the %d runs at dt <= 0.01 with |kT error| <= 1 %%:" % nu_ref[3],
+                  "# nu = %.4f +- %.4f; their Birge ratio %.2f scales every viscosity error bar" % nu_ref[:3]]
+    lines += ["#", "# Stability map and recommended step (kT error; crossings interpolated between measured steps,",
              "# '-' when not reached; recommended: largest measured step with |kT error| <= 1 % up to it)",
              "# integrator dt1percent dt5percent dtBlowUp recommendedDt1percent"]
     for label, points in rows.items():
@@ -181,8 +250,8 @@ def results(rows, reference):
     lines += ["#",
               "# Equal accuracy against %s at dt %g (errors: kT %.3g +- %.3g, pressure %.3g +- %.3g, viscosity %.3g +- %.3g;"
               % (label, dt, base["kT"], base["kTse"], base["P"], base["Pse"], base["nu"], base["nuse"]),
-              "# pressure and viscosity against %s): a step qualifies when each of its %s errors is at most" % (
-                  reference or "the reference", ", ".join(quantities)),
+              "# pressure against %s, viscosity against the %s): a step qualifies when each of its %s errors is at most" % (
+                  reference_names(reference, nu_ref)["P"], reference_names(reference, nu_ref)["nu"], ", ".join(quantities)),
               "# GW's + 2 combined SE; the equal-accuracy step is the largest one up to which every step qualifies.",
               "# speedUp = cost(GW at %g) / cost(method at its equal-accuracy step)." % dt,
               "# integrator equalAccuracyDt secondsPerParticleTimeUnit speedUp"]
@@ -223,8 +292,13 @@ def checks(rows):
 
 def main():
     rows, reference = read_rows(TABLE)
-    plot(rows, reference)
-    lines, _ = results(rows, reference)
+    costs = step_costs(rows)
+    apply_cost_model(rows, costs)
+    nu_ref = viscosity_reference(rows)
+    if nu_ref:
+        apply_viscosity_reference(rows, nu_ref)
+    plot(rows, reference, nu_ref)
+    lines, _ = results(rows, reference, costs, nu_ref)
     text = "\n".join(lines) + "\n"
     with open("results.dat.tmp", "w") as f:
         f.write(text)
