@@ -49,10 +49,9 @@ void halfKickAndDrift(System& sys) {
 
 WallCounters endMove(System& sys) {
     sys.advanceClock();
-    // Reflect before wrapping: a particle that crossed a wall lying on a box face must be mirrored
-    // back, not carried round to the far side of the box.
+    // Reflect before wrapping (the sort wraps): a particle that crossed a wall lying on a box face must
+    // be mirrored back, not carried round to the far side of the box.
     const WallCounters walls = sys.applyWalls();
-    sys.wrapPositions();
     sys.sortByCell();
     return walls;
 }

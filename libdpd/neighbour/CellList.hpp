@@ -24,8 +24,8 @@ public:
     // Lays out the grid for a box and cutoff. Throws std::invalid_argument if an active axis has fewer
     // than three cells (the half stencil would then meet the same neighbour twice).
     void setup(const Box& box, double cutoff);
-    // Reorders the particles by cell and records where each cell starts. Every particle counts as
-    // mobile.
+    // Wraps the positions into the box, reorders the particles by cell and records where each cell
+    // starts. Every particle counts as mobile.
     void sortParticles(Particles& p);
     // The same, with the mobile particles of each cell before the frozen ones (frozenOfSpecies[s] != 0
     // for a frozen species s).

@@ -22,7 +22,7 @@ struct PairLoopContext;
 // Seconds spent in the parts of a step that System does itself, summed over the steps while a
 // System's stepTimes points here (dpdBenchmark's breakdown; off, and free, by default).
 struct StepTimes {
-    double wrap = 0.0;    // wrapPositions
+    double wrap = 0.0;    // wrapPositions (a step's wrapping is done by sortByCell)
     double sort = 0.0;    // sortByCell
     double forces = 0.0;  // computeForces: pair forces and body force
     double walls = 0.0;   // applyWalls
@@ -61,12 +61,14 @@ public:
 
     // Brings every position back into the box.
     void wrapPositions();
-    // Reorders the particles by cell (call after moving, before computing forces).
+    // Brings every position back into the box and reorders the particles by cell (call after moving,
+    // before computing forces).
     void sortByCell();
     // Forces at the current positions and velocities: pair forces (keyed to the current step's random
     // numbers) plus the body force, plus the forces of tunable-slip walls when there are any. Requires sortByCell() since the last move.
     void computeForces();
-    // Reflects fluid particles that crossed a wall during the last move (call before wrapPositions).
+    // Reflects fluid particles that crossed a wall during the last move (call before wrapping, that is
+    // before wrapPositions or sortByCell).
     // The geometry wall's counts, if there is one, come last in the per-wall lists.
     WallCounters applyWalls();
     // True if the point is inside the solid of a planar wall or of the geometry wall.
