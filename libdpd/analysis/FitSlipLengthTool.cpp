@@ -1,7 +1,9 @@
 #include "analysis/FitSlipLengthTool.hpp"
 
+#include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "io/TimeDirectories.hpp"
+#include "sampling/BinProfile.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,9 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* axisName(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
-int axisFromName(const std::string& s) { return s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1; }
 
 const char* modeName(FitSlipLengthMode m) {
     switch (m) {
@@ -99,7 +99,7 @@ struct Points {
 };
 
 Points usablePoints(const ProfileTableData& t, int component) {
-    const std::string u = std::string("u") + axisName(component);
+    const std::string u = std::string("u") + axisLetter(component);
     const std::vector<double>& y = t.column(t.axisName());
     const std::vector<double>& vel = t.column(u);
     const std::vector<double>& err = t.column(u + "Err");
@@ -146,12 +146,6 @@ double centralDensity(const ProfileTableData& t);
                      "cannot fit the profile " + t.file + ": " + e.what());
 }
 
-// The stress column of the shear component (flow component, profile axis), e.g. sigmaxz.
-std::string shearStressColumn(int component, int axis) {
-    const int a = std::min(component, axis), b = std::max(component, axis);
-    return std::string("sigma") + axisName(a) + axisName(b);
-}
-
 void fitCouetteMode(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& profile,
                     FitSlipLengthResult& r) {
     const ChannelBounds walls = channelBounds(s, t, r.axis);
@@ -159,7 +153,7 @@ void fitCouetteMode(const FitSlipLengthSetup& s, const ProfileTableData& t, cons
     const double fitHigh = s.hasFitRange ? s.fitHigh : walls.high - s.exclude;
     try {
         r.couette = fitCouette(profile, walls.low, walls.high, fitLow, fitHigh, walls.velocityLow, walls.velocityHigh);
-        r.stressColumn = shearStressColumn(s.component, r.axis);
+        r.stressColumn = shearStressName(s.component, r.axis);
         r.hasStress = t.has(r.stressColumn) && t.has(r.stressColumn + "Err");
         if (r.hasStress)
             r.stress = viscosityFromStress(t.column(t.axisName()), t.column(r.stressColumn), t.column(r.stressColumn + "Err"),
@@ -284,8 +278,8 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     }
     if (f.g[s.component] == 0.0)
         d.fail("component", std::string("the body force ") + vectorText(f.g) + " of " + dpdFile + " has no " +
-                                axisName(s.component) + " component: nothing drives a flow along " +
-                                axisName(s.component));
+                                axisLetter(s.component) + " component: nothing drives a flow along " +
+                                axisLetter(s.component));
 
     const double defaultExclude = s.mode == FitSlipLengthMode::poiseuille ? 0.0 : 1.0;
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : defaultExclude;
@@ -324,11 +318,11 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     r.profileFile = t.file;
     r.component = s.component;
     r.exclude = s.exclude;
-    r.axis = axisFromName(t.axisName());
+    r.axis = axisFromLetter(t.axisName());
     if (r.axis < 0)
         throw IoError(t.file + ": the first column is '" + t.axisName() + "', not a bin axis x, y or z");
     if (r.axis == r.component)
-        d.fail(d.found("component") ? "component" : "", std::string("the flow component ") + axisName(r.component) +
+        d.fail(d.found("component") ? "component" : "", std::string("the flow component ") + axisLetter(r.component) +
                                                             " is the axis of the profile " + t.file);
     r.g = s.model.bodyForce.g[s.component];
 
@@ -350,7 +344,7 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     } else {
         if (r.axis != s.model.bodyForce.gradientAxis)
             s.dpdProperties.fail("bodyForce", "the reversePoiseuille gradientAxis is " +
-                                                  std::string(axisName(s.model.bodyForce.gradientAxis)) +
+                                                  std::string(axisLetter(s.model.bodyForce.gradientAxis)) +
                                                   " but the profile " + t.file + " is binned along " + t.axisName());
         double lo, hi;
         binRange(t, lo, hi);
@@ -391,8 +385,8 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
     d.setValue("mode", std::string(modeName(r.mode)));
     if (!r.time.empty()) d.setValue("time", r.time);
     d.setValue("profile", r.profileFile);
-    d.setValue("axis", std::string(axisName(r.axis)));
-    d.setValue("component", std::string(axisName(r.component)));
+    d.setValue("axis", std::string(axisLetter(r.axis)));
+    d.setValue("component", std::string(axisLetter(r.component)));
     d.setValue("g", r.g);
     d.setValue("exclude", r.exclude);
     d.setValue("points", r.pointsUsed);
@@ -463,10 +457,10 @@ void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
         else out << std::setw(28) << a << b;
         out << std::right << "\n";
     };
-    const std::string ax = axisName(r.axis);
+    const std::string ax = axisLetter(r.axis);
 
     out << "Time = " << (r.time.empty() ? "?" : r.time) << "\n";
-    out << "    profile " << r.profileFile << ": u" << axisName(r.component) << " across " << ax << ", "
+    out << "    profile " << r.profileFile << ": u" << axisLetter(r.component) << " across " << ax << ", "
         << r.pointsUsed << " bins";
     if (r.binsWithoutVelocity) out << ", " << r.binsWithoutVelocity << " without particles left out";
     if (r.binsWithoutError) out << ", " << r.binsWithoutError << " without an error bar left out";

@@ -1,5 +1,6 @@
 #include "foam/CompareFVMTool.hpp"
 
+#include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "foam/FoamFieldFiles.hpp"
 #include "io/AtomicFile.hpp"
@@ -24,8 +25,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* axisLetter(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
-int axisFromLetter(const std::string& s) { return s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1; }
 
 bool sameVector(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double scale) {
     return (a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(1.0, scale);

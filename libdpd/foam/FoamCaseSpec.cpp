@@ -1,5 +1,6 @@
 #include "foam/FoamCaseSpec.hpp"
 
+#include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "geometry/GeometryDictionary.hpp"
 #include "io/Dictionary.hpp"
@@ -15,7 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* axisLetter(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 
 Box readMeshBox(const Dictionary& dict, const MakeFoamCaseInput& in, int dpdDimension) {
     Box box = in.snapshotBox;

@@ -1,5 +1,6 @@
 #include "foam/FoamCaseWriter.hpp"
 
+#include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Dictionary.hpp"
@@ -17,7 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* axisLetter(int a) { return a == 0 ? "x" : a == 1 ? "y" : "z"; }
 const char* axisUpper(int a) { return a == 0 ? "X" : a == 1 ? "Y" : "Z"; }
 
 // Shortest form that reads back the same double.

@@ -1,5 +1,6 @@
 #include "foam/MakeFoamCaseTool.hpp"
 
+#include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "foam/FoamCaseWriter.hpp"
 #include "io/Dictionary.hpp"
@@ -49,13 +50,12 @@ FoamCaseSpec runMakeFoamCase(const MakeFoamCaseOptions& o, std::ostream& out) {
     const fs::path target = fs::path(spec.foamCase).is_absolute() ? fs::path(spec.foamCase) : caseDir / spec.foamCase;
     writeFoamCase(spec, target.string());
 
-    const char* axes = "xyz";
     out << "OpenFOAM case " << target.string() << " (simpleFoam, laminar)\n"
         << "    box from     " << (in.snapshotFile.empty() ? dictFile.string() : in.snapshotFile) << "\n"
         << "    mesh         " << spec.cells[0] << " x " << spec.cells[1] << " x " << spec.cells[2] << " cells, "
         << spec.dimension << "-D, from (" << spec.lo.transpose() << ") to (" << spec.hi.transpose() << ")\n";
     if (spec.wallAxis >= 0)
-        out << "    walls        " << spec.lower.name << " and " << spec.upper.name << " normal to " << axes[spec.wallAxis]
+        out << "    walls        " << spec.lower.name << " and " << spec.upper.name << " normal to " << axisLetter(spec.wallAxis)
             << ", slip lengths " << spec.lower.slipLength << " " << spec.upper.slipLength << "\n";
     if (!spec.solidCells.empty())
         out << "    solid cells  " << spec.solidCells.size() << " (from " << spec.geometrySource << ")\n";

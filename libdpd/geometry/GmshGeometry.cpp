@@ -1,5 +1,6 @@
 #include "geometry/GmshGeometry.hpp"
 
+#include "core/Axis.hpp"
 #include "geometry/BucketGrid.hpp"
 #include "geometry/GeometryInputError.hpp"
 
@@ -167,7 +168,7 @@ SimplexMesh buildMesh(const std::string& file, const RawElements& raw, const Geo
             for (int a = 0; a < mesh.dimension; ++a) {
                 const double x = mesh.vertices[s[c]][a];
                 if (x < frame.localLo[a] - tol || x > frame.localLo[a] + frame.period[a] + tol)
-                    fail(file, std::string("the mesh reaches ") + "xyz"[a] + " = " + std::to_string(x) +
+                    fail(file, std::string("the mesh reaches ") + axisLetter(a) + " = " + std::to_string(x) +
                                    " (gmsh coordinates), outside the box (check origin and the box size)");
             }
     // Buckets about two elements wide.

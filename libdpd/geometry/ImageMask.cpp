@@ -1,5 +1,6 @@
 #include "geometry/ImageMask.hpp"
 
+#include "core/Axis.hpp"
 #include "geometry/GeometryInputError.hpp"
 
 #include <algorithm>
@@ -53,7 +54,7 @@ void checkCoversBox(const PixelMask& m, const GeometryFrame& frame, double pixel
             std::ostringstream os;
             os << source << ": the " << m.width << " x " << m.height << " pixel image at pixelSize " << pixelSize
                << " is " << size[0] << " x " << size[1] << " but the box is " << frame.period[0] << " x "
-               << frame.period[1] << " along " << "xyz"[frame.axes[0]] << " and " << "xyz"[frame.axes[1]]
+               << frame.period[1] << " along " << axisLetter(frame.axes[0]) << " and " << axisLetter(frame.axes[1])
                << ": the mask must cover the box exactly";
             throw GeometryInputError("pixelSize", os.str());
         }

@@ -1,5 +1,6 @@
 #include "geometry/RandomEquilWall.hpp"
 
+#include "core/Axis.hpp"
 #include "geometry/GeometryDictionary.hpp"
 #include "geometry/Percolation.hpp"
 #include "integrators/Integrator.hpp"
@@ -56,7 +57,7 @@ void checkFlags(const SolidFlags& flags, const std::vector<int>& axes, const Dic
                                   "without walls for a plain fluid)");
     for (const int a : axes)
         if (!fluidPercolates(flags, a)) {
-            const std::string message = std::string("the fluid does not percolate along ") + "xyz"[a] +
+            const std::string message = std::string("the fluid does not percolate along ") + axisLetter(a) +
                                         ": no fluid path crosses the periodic box along the driving axis";
             if (dict.found("drivingAxis")) dict.fail("drivingAxis", message);
             geometryDict.fail("file", message + " (the direction of bodyForce in constant/dpdProperties)");

@@ -1,5 +1,6 @@
 #include "io/Dictionary.hpp"
 
+#include "core/Axis.hpp"
 #include "io/AtomicFile.hpp"
 
 #include "core/Error.hpp"
@@ -582,10 +583,9 @@ int Dictionary::lineOf(const std::string& key) const {
 
 int Dictionary::getAxis(const std::string& key) const {
     const std::string s = get<std::string>(key);
-    if (s == "x") return 0;
-    if (s == "y") return 1;
-    if (s == "z") return 2;
-    fail(key, "expected x, y or z, not '" + s + "'");
+    const int axis = axisFromLetter(s);
+    if (axis < 0) fail(key, "expected x, y or z, not '" + s + "'");
+    return axis;
 }
 
 std::pair<double, double> Dictionary::getIncreasingPair(const std::string& key, const std::string& lowName,

@@ -1,5 +1,7 @@
 #include "neighbour/CellList.hpp"
 
+#include "core/Axis.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -20,7 +22,7 @@ void CellList::setup(const Box& box, double cutoff) {
         n_[a] = static_cast<int>(std::floor(L[a] / cutoff));
         if (n_[a] < 3)
             throw std::invalid_argument("the box must be at least three cutoffs long along axis " +
-                                        std::string(1, "xyz"[a]) + " (it is " + std::to_string(L[a]) + ")");
+                                        std::string(axisLetter(a)) + " (it is " + std::to_string(L[a]) + ")");
         size_[a] = L[a] / n_[a];
         invSize_[a] = 1.0 / size_[a];
     }

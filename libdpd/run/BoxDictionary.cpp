@@ -1,5 +1,6 @@
 #include "run/BoxDictionary.hpp"
 
+#include "core/Axis.hpp"
 #include "io/Dictionary.hpp"
 
 #include <string>
@@ -17,7 +18,7 @@ Box readBoxDictionary(const Dictionary& d, int dimension, double cutoff) {
     for (int a = 0; a < 3; ++a) {
         if (!box.isActiveAxis(a)) continue;
         if (!(box.hi[a] - box.lo[a] >= 3.0 * cutoff))
-            bd.fail("max", std::string("the box must be at least three cutoffs long along ") + "xyz"[a]);
+            bd.fail("max", std::string("the box must be at least three cutoffs long along ") + axisLetter(a));
     }
     return box;
 }

@@ -1,13 +1,15 @@
 #include "sampling/BinLayoutDictionary.hpp"
 
+#include "core/Axis.hpp"
 #include "io/Dictionary.hpp"
 
 namespace dpd {
 
 namespace {
 
-int axisFromLetter(const Dictionary& d, const std::string& key, const std::string& s, const Box& box) {
-    const int axis = s == "x" ? 0 : s == "y" ? 1 : s == "z" ? 2 : -1;
+// An axis letter of a bin layout: one of the box's active axes.
+int activeAxisFromLetter(const Dictionary& d, const std::string& key, const std::string& s, const Box& box) {
+    const int axis = axisFromLetter(s);
     if (axis < 0) d.fail(key, "expected x, y or z, not '" + s + "'");
     if (!box.isActiveAxis(axis)) d.fail(key, "a 2-D scene lies in the x-z plane: there is no y axis");
     return axis;
@@ -15,7 +17,7 @@ int axisFromLetter(const Dictionary& d, const std::string& key, const std::strin
 
 BinLayout readOneAxis(const Dictionary& d, const Box& box) {
     BinLayout layout;
-    layout.axis = axisFromLetter(d, "axis", d.get<std::string>("axis"), box);
+    layout.axis = activeAxisFromLetter(d, "axis", d.get<std::string>("axis"), box);
     layout.nBins = d.getPositive<int>("nBins");
     layout.lo = d.getOrDefault<double>("min", box.lo[layout.axis]);
     layout.hi = d.getOrDefault<double>("max", box.hi[layout.axis]);
@@ -35,8 +37,8 @@ BinLayout readTwoAxes(const Dictionary& d, const Box& box) {
     const std::vector<std::string> axes = d.get<std::vector<std::string>>("axes");
     if (axes.size() != 2) d.fail("axes", "expected two axes, e.g. (x z)");
     BinLayout layout;
-    layout.axis = axisFromLetter(d, "axes", axes[0], box);
-    layout.axis2 = axisFromLetter(d, "axes", axes[1], box);
+    layout.axis = activeAxisFromLetter(d, "axes", axes[0], box);
+    layout.axis2 = activeAxisFromLetter(d, "axes", axes[1], box);
     if (layout.axis == layout.axis2) d.fail("axes", "the two axes must differ");
     const std::vector<int> n = d.get<std::vector<int>>("nBins");
     if (n.size() != 2 || n[0] < 1 || n[1] < 1) d.fail("nBins", "expected two positive bin counts, one per axis");
@@ -75,7 +77,5 @@ double binCrossSection(const BinLayout& layout, const Box& box) {
     if (layout.twoAxes()) across /= box.length()[layout.axis2];
     return across;
 }
-
-const char* axisLetter(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
 
 }  // namespace dpd

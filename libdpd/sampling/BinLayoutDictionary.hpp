@@ -7,6 +7,7 @@
 //                              // column of bins holding each position along the first axis
 //
 // Errors are InputErrors naming the dictionary, the line and the keyword.
+#include "core/Axis.hpp"
 #include "core/Box.hpp"
 #include "sampling/BinAccumulator.hpp"
 
@@ -24,6 +25,5 @@ BinLayout readBinLayout(const Dictionary& d, const Box& box);
 std::vector<double> readSections(const Dictionary& d, const BinLayout& layout);
 // The measure of the box across the bins: volume / length (one axis) or volume / (length1 length2).
 double binCrossSection(const BinLayout& layout, const Box& box);
-const char* axisLetter(int axis);
 
 }  // namespace dpd

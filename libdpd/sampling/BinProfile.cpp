@@ -1,4 +1,5 @@
 #include "sampling/BinProfile.hpp"
+#include "core/Axis.hpp"
 #include "sampling/BlockStatistics.hpp"
 
 #include <algorithm>
@@ -89,8 +90,7 @@ StressPoint stressProfilePoint(const BinAccumulator& acc, int b, const std::vect
 }  // namespace
 
 std::string shearStressName(int flowAxis, int binAxis) {
-    const char* names = "xyz";
-    return std::string("sigma") + names[std::min(flowAxis, binAxis)] + names[std::max(flowAxis, binAxis)];
+    return std::string("sigma") + axisLetter(std::min(flowAxis, binAxis)) + axisLetter(std::max(flowAxis, binAxis));
 }
 
 BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int dimension) {

@@ -3,6 +3,7 @@
 // constant/dpdProperties frozen within one cutoff of the fluid and dropped deeper in
 // (system/randomEquilWallDict).
 #include "app/ToolCommandLine.hpp"
+#include "core/Axis.hpp"
 #include "geometry/RandomEquilWall.hpp"
 #include "io/Dictionary.hpp"
 #include "run/DpdProperties.hpp"
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
         std::cout << "Background grid  : " << r.gridCells[0] << " x " << r.gridCells[1] << " x " << r.gridCells[2]
                   << " cells, porosity " << r.gridPorosity << "\n"
                   << "Percolation      : ";
-        for (const int a : r.drivingAxes) std::cout << "xyz"[a] << " ";
+        for (const int a : r.drivingAxes) std::cout << dpd::axisLetter(a) << " ";
         std::cout << (r.drivingAxes.empty() ? "not checked (no driving axis)\n" : "ok\n")
                   << "Filled           : " << r.filled << " particles, equilibrated for " << r.equilibrationSteps
                   << " steps (kT " << r.equilibratedKT << ")\n"
