@@ -95,6 +95,12 @@ inline void findCellPairs(const Particles& p, const CellList& cl, const PairLoop
     batch.size = k;
 }
 
+// The ids of a pair, lower first, cut to 32 bits: the key of its random number.
+inline void orderedIds(std::uint64_t a, std::uint64_t b, std::uint32_t& lo, std::uint32_t& hi) {
+    lo = static_cast<std::uint32_t>(std::min(a, b));
+    hi = static_cast<std::uint32_t>(std::max(a, b));
+}
+
 // Pass 2: what the force needs beyond the separation, gathered per pair (relative velocity along
 // the separation, the ordered ids, the coefficients when they differ), the random numbers of all the
 // pairs at once (eight Philox counters per instruction), then the force over r of every pair in one
@@ -128,11 +134,7 @@ inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const 
         const std::uint32_t i = bi[k], j = bj[k];
         if constexpr (kVelocity)
             rDotV[k] = separationDotRelativeVelocity(bdx[k], bdy[k], bdz[k], vx[i] - vx[j], vy[i] - vy[j], vz[i] - vz[j]);
-        if constexpr (kRandom) {
-            const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
-            idLo[k] = static_cast<std::uint32_t>(lo);
-            idHi[k] = static_cast<std::uint32_t>(hi);
-        }
+        if constexpr (kRandom) orderedIds(id[i], id[j], idLo[k], idHi[k]);
     }
     if constexpr (!kVelocity) std::fill(rDotV, rDotV + n, 0.0);
     if constexpr (!kCommon)
@@ -187,35 +189,47 @@ inline void scatterBatch(Particles& p, const PairBatch& batch) {
     fx[current] += fxi; fy[current] += fyi; fz[current] += fzi;
 }
 
-template <bool kFilter, bool kCommon, class Evaluator>
-void slabPairForces(Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan, const Evaluator& eval,
-                    double cutoff2, int ix, const std::vector<StencilEntry>& stencil) {
-    const CellList& cl = ctx.cells;
+// The pairs of each row of cells (ix, iy) of slab ix, found into this thread's batch (pass 1), then
+// handed to rowDone(batch).
+template <class RowDone>
+void forEachPairRow(const Particles& p, const CellList& cl, const PairLoopPlan& plan,
+                    const std::vector<StencilEntry>& stencil, double cutoff2, int ix, const RowDone& rowDone) {
     const auto& n = cl.cellsPerAxis();
     PairBatch& batch = threadPairBatch();
     for (int iy = 0; iy < n[1]; ++iy) {
         batch.size = 0;
-        for (int iz = 0; iz < n[2]; ++iz) findCellPairs<kFilter>(p, cl, plan, stencil, cutoff2, ix, iy, iz, batch);
-        evaluateBatch<kCommon>(p, ctx, plan, eval, batch);
-        scatterBatch(p, batch);
+        for (int iz = 0; iz < n[2]; ++iz) {
+            if (plan.filterInteracting) findCellPairs<true>(p, cl, plan, stencil, cutoff2, ix, iy, iz, batch);
+            else findCellPairs<false>(p, cl, plan, stencil, cutoff2, ix, iy, iz, batch);
+        }
+        rowDone(batch);
     }
 }
 
-template <bool kFilter, bool kCommon, class Evaluator>
-void colouredSlabs(Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan, const Evaluator& eval,
-                   double cutoff2, const std::vector<StencilEntry>& stencil) {
-    const int nx = ctx.cells.cellsPerAxis()[0];
-    // Colour 0: even slabs (excluding the last one when nx is odd), colour 1: odd slabs, colour 2:
-    // the last slab when nx is odd (it writes into slab 0 through the periodic boundary).
+// slab(ix) for every slab of cells ix, in colours: all even slabs in parallel (excluding the last one
+// when nx is odd), then all odd slabs, then the last slab when nx is odd (it writes into slab 0
+// through the periodic boundary). Slabs of one colour share no particle.
+template <class Slab>
+void forEachSlabInColours(int nx, const Slab& slab) {
     const int lastEven = (nx % 2 == 0) ? nx : nx - 1;
     const int first[3] = {0, 1, lastEven};
     const int end[3] = {lastEven, nx, nx};
     for (int colour = 0; colour < 3; ++colour) {
         const int count = (end[colour] - first[colour] + 1) / 2;
 #pragma omp parallel for schedule(dynamic, 1)
-        for (int k = 0; k < count; ++k)
-            slabPairForces<kFilter, kCommon>(p, ctx, plan, eval, cutoff2, first[colour] + 2 * k, stencil);
+        for (int k = 0; k < count; ++k) slab(first[colour] + 2 * k);
     }
+}
+
+template <bool kCommon, class Evaluator>
+void colouredSlabs(Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan, const Evaluator& eval,
+                   double cutoff2, const std::vector<StencilEntry>& stencil) {
+    forEachSlabInColours(ctx.cells.cellsPerAxis()[0], [&](int ix) {
+        forEachPairRow(p, ctx.cells, plan, stencil, cutoff2, ix, [&](PairBatch& batch) {
+            evaluateBatch<kCommon>(p, ctx, plan, eval, batch);
+            scatterBatch(p, batch);
+        });
+    });
 }
 
 }  // namespace detail
@@ -225,15 +239,11 @@ void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evalua
     const std::vector<StencilEntry> stencil = halfStencil(ctx.cells.box());
     const PairLoopPlan plan = makePairLoopPlan(ctx.table, ctx.cells);
     const double cutoff2 = cutoff * cutoff;
-    // The two switches pick the loop once per call: a species check per candidate only where some
-    // pair the layout does not skip is non-interacting, per-pair coefficients only where they differ.
-    if (plan.filterInteracting) {
-        if (plan.commonCoefficients) detail::colouredSlabs<true, true>(p, ctx, plan, eval, cutoff2, stencil);
-        else detail::colouredSlabs<true, false>(p, ctx, plan, eval, cutoff2, stencil);
-    } else {
-        if (plan.commonCoefficients) detail::colouredSlabs<false, true>(p, ctx, plan, eval, cutoff2, stencil);
-        else detail::colouredSlabs<false, false>(p, ctx, plan, eval, cutoff2, stencil);
-    }
+    // The switches pick the loop once per call: a species check per candidate only where some pair
+    // the layout does not skip is non-interacting (in forEachPairRow), per-pair coefficients only
+    // where they differ.
+    if (plan.commonCoefficients) detail::colouredSlabs<true>(p, ctx, plan, eval, cutoff2, stencil);
+    else detail::colouredSlabs<false>(p, ctx, plan, eval, cutoff2, stencil);
 }
 
 }  // namespace dpd

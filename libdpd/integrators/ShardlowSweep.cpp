@@ -25,24 +25,24 @@ namespace dpd {
 void shardlowSweep(System& sys, double dt, std::uint32_t sweep) {
     Particles& p = sys.particles;
     const PairTable& table = sys.pairs;
-    const PairRandom& random = sys.random();
     const auto& frozen = sys.frozenOfSpecies();
     const double kT = sys.forceParameters.kT;
     const double invCutoff = 1.0 / sys.forceParameters.cutoff;
     const double exponent = sys.forceParameters.weightExponent;
     const bool standardWeight = exponent == 2.0;
     const std::uint64_t step = static_cast<std::uint64_t>(sys.step);
+    const PairRandom& random = sys.random();
     const std::uint32_t stream = kStreamShardlowSweep + 0x10u * sweep;  // distinct from all RandomStream values
     double* vx = p.vx.data();
     double* vy = p.vy.data();
     double* vz = p.vz.data();
-    const auto update = [&](std::uint32_t i, std::uint32_t j, double dx, double dy, double dz, double r2) {
+    const auto update = [&](std::uint32_t i, std::uint32_t j, double dx, double dy, double dz, double zeta) {
         const PairCoeffs& c = table(p.species[i], p.species[j]);
-        if (!c.interact || c.gamma == 0.0) return;
+        if (c.gamma == 0.0) return;
         const double invMassI = frozen[p.species[i]] ? 0.0 : 1.0;
         const double invMassJ = frozen[p.species[j]] ? 0.0 : 1.0;
         const double invMu = invMassI + invMassJ;
-        const double r = std::sqrt(r2);
+        const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
         const double w = 1.0 - r * invCutoff;
         const double wD = standardWeight ? w * w : std::pow(w, exponent);
         // decay - 1 = e^(-kappa dt) - 1, and 1 - decay^2 = -(decay - 1)(decay + 1), accurate for small kappa dt.
@@ -50,12 +50,18 @@ void shardlowSweep(System& sys, double dt, std::uint32_t sweep) {
         const double spread = std::sqrt(-kT * invMu * decayMinusOne * (2.0 + decayMinusOne));
         const double ex = dx / r, ey = dy / r, ez = dz / r;
         const double u = ex * (vx[i] - vx[j]) + ey * (vy[i] - vy[j]) + ez * (vz[i] - vz[j]);
-        const double du = u * decayMinusOne + spread * random.pairGaussian(step, p.id[i], p.id[j], stream);
+        const double du = u * decayMinusOne + spread * zeta;
         const double dvi = du * invMassI / invMu, dvj = du * invMassJ / invMu;
         vx[i] += dvi * ex; vy[i] += dvi * ey; vz[i] += dvi * ez;
         vx[j] -= dvj * ex; vy[j] -= dvj * ey; vz[j] -= dvj * ez;
     };
-    sweepPairs(p, sys.cells(), sys.forceParameters.cutoff, update);
+    // Per row of cells: the pairs' Gaussians first (they depend on nothing the sweep changes), then
+    // the pairs one after the other.
+    sweepPairRows(p, sys.cells(), table, sys.forceParameters.cutoff, [&](detail::PairBatch& b) {
+        const std::size_t n = b.size;
+        for (std::size_t k = 0; k < n; ++k) b.zeta[k] = random.pairGaussian(step, p.id[b.i[k]], p.id[b.j[k]], stream);
+        for (std::size_t k = 0; k < n; ++k) update(b.i[k], b.j[k], b.dx[k], b.dy[k], b.dz[k], b.zeta[k]);
+    });
 }
 
 }  // namespace dpd
