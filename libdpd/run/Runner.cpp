@@ -131,6 +131,7 @@ public:
         sys.sortByCell();
         if (!restartForces) sys.computeForces();
         printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes);
+        log_.flush();  // the set-up shows in a log file at once, not with the first report
         loop(sys, control, model, functions, *integrator);
     }
 
