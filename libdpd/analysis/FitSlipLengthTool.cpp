@@ -22,8 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
-
 const char* modeName(FitSlipLengthMode m) {
     switch (m) {
         case FitSlipLengthMode::poiseuille: return "poiseuille";

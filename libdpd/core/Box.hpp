@@ -27,6 +27,12 @@ struct Box {
         else if (x < lo[axis]) x += L * static_cast<long>((hi[axis] - x) / L);
         return x;
     }
+    // Map a position back into the box along every active axis (y stays put in 2-D).
+    void wrapPoint(double& x, double& y, double& z) const {
+        x = wrap(x, 0);
+        if (isActiveAxis(1)) y = wrap(y, 1);
+        z = wrap(z, 2);
+    }
 };
 
 }  // namespace dpd

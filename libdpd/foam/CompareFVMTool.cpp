@@ -25,7 +25,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 bool sameVector(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double scale) {
     return (a - b).cwiseAbs().maxCoeff() <= 1e-9 * std::max(1.0, scale);
 }

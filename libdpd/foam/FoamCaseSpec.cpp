@@ -16,7 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 Box readMeshBox(const Dictionary& dict, const MakeFoamCaseInput& in, int dpdDimension) {
     Box box = in.snapshotBox;
     box.dimension = dpdDimension;

@@ -95,12 +95,6 @@ inline void findCellPairs(const Particles& p, const CellList& cl, const PairLoop
     batch.size = k;
 }
 
-// The ids of a pair, lower first, cut to 32 bits: the key of its random number.
-inline void orderedIds(std::uint64_t a, std::uint64_t b, std::uint32_t& lo, std::uint32_t& hi) {
-    lo = static_cast<std::uint32_t>(std::min(a, b));
-    hi = static_cast<std::uint32_t>(std::max(a, b));
-}
-
 // Pass 2: what the force needs beyond the separation, gathered per pair (relative velocity along
 // the separation, the ordered ids, the coefficients when they differ), the random numbers of all the
 // pairs at once (eight Philox counters per instruction), then the force over r of every pair in one
@@ -134,7 +128,11 @@ inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const 
         const std::uint32_t i = bi[k], j = bj[k];
         if constexpr (kVelocity)
             rDotV[k] = separationDotRelativeVelocity(bdx[k], bdy[k], bdz[k], vx[i] - vx[j], vy[i] - vy[j], vz[i] - vz[j]);
-        if constexpr (kRandom) orderedIds(id[i], id[j], idLo[k], idHi[k]);
+        if constexpr (kRandom) {
+            const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
+            idLo[k] = static_cast<std::uint32_t>(lo);
+            idHi[k] = static_cast<std::uint32_t>(hi);
+        }
     }
     if constexpr (!kVelocity) std::fill(rDotV, rDotV + n, 0.0);
     if constexpr (!kCommon)

@@ -67,13 +67,10 @@ void CellList::sort(Particles& p) {
     // Key 2c for the mobile particles of cell c, 2c + 1 for its frozen ones.
     const bool split = splitsFrozen();
     // Positions are wrapped into the box on the way: this is their one pass before the pair loop.
-    const bool wrapY = box_.isActiveAxis(1);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
-        const double x = box_.wrap(p.rx[i], 0), z = box_.wrap(p.rz[i], 2);
-        const double y = wrapY ? box_.wrap(p.ry[i], 1) : p.ry[i];
-        p.rx[i] = x; p.ry[i] = y; p.rz[i] = z;
-        const int c = cellIndex(axisCell(x, 0), axisCell(y, 1), axisCell(z, 2));
+        box_.wrapPoint(p.rx[i], p.ry[i], p.rz[i]);
+        const int c = cellIndex(axisCell(p.rx[i], 0), axisCell(p.ry[i], 1), axisCell(p.rz[i], 2));
         keyOf_[i] = 2 * static_cast<std::uint32_t>(c) + (split && isFrozenSpecies(p.species[i]) ? 1u : 0u);
     }
     std::fill(start_.begin(), start_.end(), 0);

@@ -71,11 +71,7 @@ void System::wrapPositions() {
     const ScopedTimer timer(stepTimes ? &stepTimes->wrap : nullptr);
     const long n = static_cast<long>(particles.size());
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-        particles.rx[i] = box.wrap(particles.rx[i], 0);
-        if (box.isActiveAxis(1)) particles.ry[i] = box.wrap(particles.ry[i], 1);
-        particles.rz[i] = box.wrap(particles.rz[i], 2);
-    }
+    for (long i = 0; i < n; ++i) box.wrapPoint(particles.rx[i], particles.ry[i], particles.rz[i]);
 }
 
 void System::sortByCell() {

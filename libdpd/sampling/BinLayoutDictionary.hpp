@@ -7,7 +7,6 @@
 //                              // column of bins holding each position along the first axis
 //
 // Errors are InputErrors naming the dictionary, the line and the keyword.
-#include "core/Axis.hpp"
 #include "core/Box.hpp"
 #include "sampling/BinAccumulator.hpp"
 

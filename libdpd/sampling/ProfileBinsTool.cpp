@@ -1,6 +1,7 @@
 #include "sampling/ProfileBinsTool.hpp"
 #include "sampling/BlockStatistics.hpp"
 
+#include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "io/Snapshot.hpp"

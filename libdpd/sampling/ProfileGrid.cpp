@@ -1,5 +1,6 @@
 #include "sampling/ProfileGrid.hpp"
 
+#include "core/Axis.hpp"
 #include "io/AtomicFile.hpp"
 #include "sampling/BinLayoutDictionary.hpp"
 
