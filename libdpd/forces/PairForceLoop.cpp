@@ -14,4 +14,13 @@ std::vector<StencilEntry> halfStencil(const Box& box) {
     return s;
 }
 
+std::vector<StencilColumn> halfStencilColumns(const Box& box) {
+    std::vector<StencilColumn> columns{{0, 0, 0, 2}};
+    const bool y = box.isActiveAxis(1);
+    for (int dy = -1; dy <= 1; ++dy)
+        if (y || dy == 0) columns.push_back({1, dy, -1, 3});
+    if (y) columns.push_back({0, 1, -1, 3});
+    return columns;
+}
+
 }  // namespace dpd

@@ -15,6 +15,7 @@
 #include "core/Particles.hpp"
 #include "core/Species.hpp"
 #include "forces/DpdPairForce.hpp"
+#include "forces/PairInputs.hpp"
 #include "neighbour/CellList.hpp"
 #include "random/PairRandom.hpp"
 
@@ -28,6 +29,15 @@ namespace dpd {
 struct StencilEntry {
     int dx, dy, dz;
 };
+
+// The half stencil as columns along z: cells (dx, dy, dzFirst) ... (dx, dy, dzFirst + cells - 1)
+// of the home cell's neighbours, so that each column's cells follow each other in memory (but where
+// the column wraps through the box along z). The home column (0, 0) holds the home cell and the one
+// above it; the others (dx = +1, or dx = 0 and dy = +1) three cells each.
+struct StencilColumn {
+    int dx, dy, dzFirst, cells;
+};
+std::vector<StencilColumn> halfStencilColumns(const Box& box);
 
 // Half stencil: the cell itself first, then neighbours with dx = +1, or dx = 0 and dy = +1, or
 // dx = dy = 0 and dz = +1. Along an inactive (2-D) axis only offset 0 is kept.

@@ -5,93 +5,129 @@
 #include "forces/PairSearch.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dpd {
 namespace detail {
 
-// A run of neighbour particles [begin, end) standing at r_j + image: consecutive stencil cells that
-// are also consecutive in memory (the z neighbours of a row, mostly) make one run.
-struct NeighbourRun {
-    std::uint32_t begin, end;
-    double imageX, imageY, imageZ;
+// The squared cutoff as a float no larger than the double one: a pair the search keeps has
+// r^2 < cutoff^2 also when its squared distance is read back in double precision (the weight
+// 1 - r/rc stays positive).
+inline float cutoff2Below(double cutoff) {
+    const double c2 = cutoff * cutoff;
+    float f = static_cast<float>(c2);
+    if (static_cast<double>(f) > c2) f = std::nextafter(f, 0.0f);
+    return f;
+}
+
+// A stencil column seen from one row of home cells (ix, iy): its cells are base + jz.
+struct RowColumn {
+    int base, dzFirst, cells;
+    float offX, offY;
 };
 
-// The runs of the half stencil of cell (ix, iy, iz), the cell itself first. For a frozen particle only
-// the mobile part of each cell counts (when the plan skips frozen pairs). Returns the number of runs.
-inline int neighbourRuns(const CellList& cl, const std::vector<StencilEntry>& stencil, int ix, int iy, int iz,
-                         bool mobileOnly, NeighbourRun* runs) {
+// The stencil columns of row (ix, iy), wrapped through the periodic boundaries along x and y.
+inline void rowColumns(const CellList& cl, const PairInputs& in, const std::vector<StencilColumn>& columns, int ix,
+                       int iy, RowColumn* out) {
     const auto& n = cl.cellsPerAxis();
-    const Eigen::Vector3d L = cl.box().length();
-    int count = 0;
-    for (const StencilEntry& s : stencil) {
-        int jx = ix + s.dx, jy = iy + s.dy, jz = iz + s.dz;
-        // Periodic images: when the neighbour index wraps, its particles stand one box length away.
-        double imx = 0.0, imy = 0.0, imz = 0.0;
-        if (jx >= n[0]) { jx -= n[0]; imx = L.x(); }
-        if (jy >= n[1]) { jy -= n[1]; imy = L.y(); } else if (jy < 0) { jy += n[1]; imy = -L.y(); }
-        if (jz >= n[2]) { jz -= n[2]; imz = L.z(); } else if (jz < 0) { jz += n[2]; imz = -L.z(); }
-        const int b = cl.cellIndex(jx, jy, jz);
-        const std::uint32_t begin = cl.cellStart(b), end = mobileOnly ? cl.mobileEnd(b) : cl.cellStart(b + 1);
-        NeighbourRun* last = count > 0 ? &runs[count - 1] : nullptr;
-        if (last && last->end == begin && last->imageX == imx && last->imageY == imy && last->imageZ == imz)
-            last->end = end;
-        else
-            runs[count++] = {begin, end, imx, imy, imz};
+    const auto wrapped = [](int c, int count) { return c >= count ? c - count : (c < 0 ? c + count : c); };
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const StencilColumn& col = columns[k];
+        out[k] = {cl.cellIndex(wrapped(ix + col.dx, n[0]), wrapped(iy + col.dy, n[1]), 0), col.dzFirst, col.cells,
+                  static_cast<float>(col.dx) * in.cellX, static_cast<float>(col.dy) * in.cellY};
+    }
+}
+
+// Adds to `runs` the candidates of column `col` for the home particles [iBegin, iEnd) of cell
+// `home` = (ix, iy, iz): the column's cells in one run while they follow each other in memory (a new run where
+// the column wraps through the periodic boundary along z), or, with `mobileOnly`, the mobile part of
+// each cell but the home cell, one run each.
+inline int addColumnRuns(const CellList& cl, const PairInputs& in, const RowColumn& col, int home, int iz,
+                         std::uint32_t iBegin, std::uint32_t iEnd, bool mobileOnly, NeighbourRun* runs, int count) {
+    const int nz = cl.cellsPerAxis()[2];
+    const int first = iz + col.dzFirst;
+    if (!mobileOnly && first >= 0 && first + col.cells <= nz) {
+        // Away from the boundary along z (all but two cells of a row): one run, no branches.
+        const int c = col.base + first;
+        runs[count++] = {cl.cellStart(c), cl.cellStart(c + col.cells), cl.cellStart(c + 1),
+                         col.cells == 3 ? cl.cellStart(c + 2) : kNoStep, col.offX, col.offY,
+                         static_cast<float>(col.dzFirst) * in.cellZ, iBegin, iEnd, c == home};
+        return count;
+    }
+    NeighbourRun* open = nullptr;  // the run the next cell may extend
+    int openCells = 0;
+    for (int m = 0; m < col.cells; ++m) {
+        const int dz = col.dzFirst + m;
+        const int jz = dz + iz >= nz ? dz + iz - nz : (dz + iz < 0 ? dz + iz + nz : dz + iz);
+        const int c = col.base + jz;
+        const float offZ = static_cast<float>(dz) * in.cellZ;
+        if (mobileOnly) {
+            if (c != home && cl.cellStart(c) < cl.mobileEnd(c))
+                runs[count++] = {cl.cellStart(c), cl.mobileEnd(c), kNoStep, kNoStep, col.offX, col.offY, offZ, iBegin, iEnd, false};
+            continue;
+        }
+        const std::uint32_t begin = cl.cellStart(c), end = cl.cellStart(c + 1);
+        if (open && jz > 0) {  // the cell follows the open run's last one in memory
+            (openCells == 1 ? open->zStep1 : open->zStep2) = begin;
+            open->jEnd = end;
+            ++openCells;
+            continue;
+        }
+        runs[count] = {begin, end, kNoStep, kNoStep, col.offX, col.offY, offZ, iBegin, iEnd, c == home};
+        open = &runs[count++];
+        openCells = 1;
     }
     return count;
 }
 
-// Keeps, of the pairs [first, end) of particle i, those whose species interact; returns the new end.
+// The runs of home cell (ix, iy, iz), given its row's columns: its mobile particles (all of them
+// unless the plan skips frozen pairs) meet every particle of the half stencil, its frozen ones only
+// the mobile particles.
+inline int neighbourRuns(const CellList& cl, const PairInputs& in, const PairLoopPlan& plan, const RowColumn* columns,
+                         int nColumns, int home, int iz, NeighbourRun* runs) {
+    const std::uint32_t aBegin = cl.cellStart(home), aEnd = cl.cellStart(home + 1);
+    const std::uint32_t aMobileEnd = plan.skipFrozenPairs ? cl.mobileEnd(home) : aEnd;
+    int count = 0;
+    if (aBegin < aMobileEnd)
+        for (int k = 0; k < nColumns; ++k)
+            count = addColumnRuns(cl, in, columns[k], home, iz, aBegin, aMobileEnd, false, runs, count);
+    if (aMobileEnd < aEnd)
+        for (int k = 0; k < nColumns; ++k)
+            count = addColumnRuns(cl, in, columns[k], home, iz, aMobileEnd, aEnd, true, runs, count);
+    return count;
+}
+
+// Keeps, of the pairs [first, end), those whose species interact; returns the new end.
 inline std::size_t dropNonInteracting(const Particles& p, const PairLoopPlan& plan, PairBatch& batch,
                                       std::size_t first, std::size_t end) {
-    if (first == end) return end;
-    const std::uint8_t* interactsI = &plan.interacts[p.species[batch.i[first]] * plan.nSpecies];
     std::size_t kept = first;
     for (std::size_t k = first; k < end; ++k) {
-        if (!interactsI[p.species[batch.j[k]]]) continue;
-        batch.j[kept] = batch.j[k];
+        if (!plan.interacts[p.species[batch.i[k]] * plan.nSpecies + p.species[batch.j[k]]]) continue;
+        batch.i[kept] = batch.i[k]; batch.j[kept] = batch.j[k];
         batch.dx[kept] = batch.dx[k]; batch.dy[kept] = batch.dy[k]; batch.dz[kept] = batch.dz[k];
         ++kept;
     }
     return kept;
 }
 
-// Pass 1: the pairs (i in cell a, j in its half stencil) closer than the cutoff, appended to the
-// batch (PairSearch.hpp). With kFilter the pairs of species that do not interact are dropped again.
+// Pass 1: the pairs of home cell (ix, iy, iz) closer than the cutoff, appended to the batch
+// (PairSearch.hpp). With kFilter the pairs of species that do not interact are dropped again.
 template <bool kFilter>
-inline void findCellPairs(const Particles& p, const CellList& cl, const PairLoopPlan& plan,
-                          const std::vector<StencilEntry>& stencil, double cutoff2, int ix, int iy, int iz,
-                          PairBatch& batch) {
-    const int a = cl.cellIndex(ix, iy, iz);
-    const std::uint32_t aBegin = cl.cellStart(a), aEnd = cl.cellStart(a + 1);
-    if (aBegin == aEnd) return;
-    const std::uint32_t aMobileEnd = plan.skipFrozenPairs ? cl.mobileEnd(a) : aEnd;
-    NeighbourRun all[32], mobile[32];
-    const int nAll = neighbourRuns(cl, stencil, ix, iy, iz, false, all);
-    const int nMobile = aMobileEnd < aEnd ? neighbourRuns(cl, stencil, ix, iy, iz, true, mobile) : 0;
+inline void findCellPairs(const Particles& p, const PairInputs& in, const CellList& cl, const PairLoopPlan& plan,
+                          const RowColumn* columns, int nColumns, float cutoff2, int home, int iz, PairBatch& batch) {
+    if (cl.cellStart(home) == cl.cellStart(home + 1)) return;
+    NeighbourRun runs[40];
+    const int nRuns = neighbourRuns(cl, in, plan, columns, nColumns, home, iz, runs);
     std::size_t candidates = 0;
-    for (int r = 0; r < nAll; ++r) candidates += all[r].end - all[r].begin;
-    batch.reserveMore(candidates * (aEnd - aBegin) + 3);
-
-    const double* rx = p.rx.data();
-    const double* ry = p.ry.data();
-    const double* rz = p.rz.data();
-    const PairSearchOutput out{batch.i.data(), batch.j.data(), batch.dx.data(), batch.dy.data(), batch.dz.data()};
-    std::size_t k = batch.size;
-    for (std::uint32_t i = aBegin; i < aEnd; ++i) {
-        const bool frozenI = i >= aMobileEnd;
-        const NeighbourRun* runs = frozenI ? mobile : all;
-        const int nRuns = frozenI ? nMobile : nAll;
-        const std::size_t first = k;
-        for (int r = 0; r < nRuns; ++r) {
-            const NeighbourRun& run = runs[r];
-            // The first run starts with cell a itself: only the partners after i.
-            const std::uint32_t jBegin = r == 0 ? std::max(run.begin, i + 1) : run.begin;
-            k = appendPairsWithinCutoff(i, rx[i] - run.imageX, ry[i] - run.imageY, rz[i] - run.imageZ, jBegin,
-                                        run.end, rx, ry, rz, cutoff2, out, k);
-        }
-        if constexpr (kFilter) k = dropNonInteracting(p, plan, batch, first, k);
-    }
+    for (int r = 0; r < nRuns; ++r)
+        candidates += std::size_t(runs[r].jEnd - runs[r].jBegin) * (runs[r].iEnd - runs[r].iBegin);
+    batch.reserveMore(candidates + 8);
+    const PairSearchInput search{in.x.data(), in.y.data(), in.z.data(), in.cellZ, cutoff2};
+    const PairSearchOutput out{batch.i, batch.j, batch.dx, batch.dy, batch.dz};
+    const std::size_t first = batch.size;
+    std::size_t k = first;
+    for (int r = 0; r < nRuns; ++r) k = appendRunPairs(runs[r], search, out, k);
+    if constexpr (kFilter) k = dropNonInteracting(p, plan, batch, first, k);
     batch.size = k;
 }
 
@@ -100,54 +136,41 @@ inline void findCellPairs(const Particles& p, const CellList& cl, const PairLoop
 // pairs at once (eight Philox counters per instruction), then the force over r of every pair in one
 // loop over contiguous arrays, which the compiler vectorises.
 template <bool kCommon, class Evaluator>
-inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan,
+inline void evaluateBatch(const Particles& p, const PairInputs& in, const PairLoopContext& ctx, const PairLoopPlan& plan,
                           const Evaluator& eval, PairBatch& batch) {
     const std::size_t n = batch.size;
-    const double* __restrict vx = p.vx.data();
-    const double* __restrict vy = p.vy.data();
-    const double* __restrict vz = p.vz.data();
-    const std::uint64_t* __restrict id = p.id.data();
     const std::uint8_t* __restrict sp = p.species.data();
-    const std::uint32_t* __restrict bi = batch.i.data();
-    const std::uint32_t* __restrict bj = batch.j.data();
-    const double* __restrict bdx = batch.dx.data();
-    const double* __restrict bdy = batch.dy.data();
-    const double* __restrict bdz = batch.dz.data();
-    double* __restrict rDotV = batch.rDotV.data();
-    std::uint32_t* __restrict idLo = batch.idLo.data();
-    std::uint32_t* __restrict idHi = batch.idHi.data();
-    double* __restrict ca = batch.a.data();
-    double* __restrict cg = batch.gamma.data();
-    double* __restrict cs = batch.sigma.data();
+    const std::uint32_t* __restrict bi = batch.i;
+    const std::uint32_t* __restrict bj = batch.j;
+    const float* __restrict bdx = batch.dx;
+    const float* __restrict bdy = batch.dy;
+    const float* __restrict bdz = batch.dz;
+    float* __restrict rDotV = batch.rDotV;
+    double* __restrict ca = batch.a;
+    double* __restrict cg = batch.gamma;
+    double* __restrict cs = batch.sigma;
     constexpr bool kRandom = EvaluatorUsesRandom<Evaluator>::value;
     constexpr bool kVelocity = EvaluatorUsesVelocity<Evaluator>::value;
-    // Four pairs at a time with AVX2 gathers (PairGather.hpp), the rest here.
-    const std::size_t gathered = gatherPairKinematics<kVelocity, kRandom>(
-        {vx, vy, vz, id, bi, bj, bdx, bdy, bdz}, {rDotV, idLo, idHi}, n);
-    for (std::size_t k = gathered; k < n; ++k) {
-        const std::uint32_t i = bi[k], j = bj[k];
-        if constexpr (kVelocity)
-            rDotV[k] = separationDotRelativeVelocity(bdx[k], bdy[k], bdz[k], vx[i] - vx[j], vy[i] - vy[j], vz[i] - vz[j]);
-        if constexpr (kRandom) {
-            const std::uint64_t lo = std::min(id[i], id[j]), hi = std::max(id[i], id[j]);
-            idLo[k] = static_cast<std::uint32_t>(lo);
-            idHi[k] = static_cast<std::uint32_t>(hi);
-        }
-    }
-    if constexpr (!kVelocity) std::fill(rDotV, rDotV + n, 0.0);
+    // Eight pairs at a time with AVX2 gathers (PairGather.hpp), the rest one by one.
+    const PairGatherInput gatherIn{in.vx.data(), in.vy.data(), in.vz.data(), in.id.data(), bi, bj, bdx, bdy, bdz};
+    const PairGatherOutput gatherOut{rDotV, batch.idLo, batch.idHi};
+    const std::size_t gathered = gatherPairKinematics<kVelocity, kRandom>(gatherIn, gatherOut, n);
+    gatherPairKinematicsScalar<kVelocity, kRandom>(gatherIn, gatherOut, gathered, n);
+    if constexpr (!kVelocity) std::fill(rDotV, rDotV + n, 0.0f);
     if constexpr (!kCommon)
         for (std::size_t k = 0; k < n; ++k) {
             const PairCoeffs& c = ctx.table(sp[bi[k]], sp[bj[k]]);
             ca[k] = c.a; cg[k] = c.gamma; cs[k] = c.sigma;
         }
-    double* __restrict zeta = batch.zeta.data();
+    double* __restrict zeta = batch.zeta;
     // The partial evaluators of the split integrators ignore zeta: no Philox for them.
-    if constexpr (kRandom) ctx.random.orderedPairUniforms(ctx.step, idLo, idHi, zeta, n);
+    if constexpr (kRandom) ctx.random.orderedPairUniforms(ctx.step, batch.idLo, batch.idHi, zeta, n);
     else std::fill(zeta, zeta + n, 0.0);
-    double* __restrict s = batch.forceOverR.data();
+    double* __restrict s = batch.forceOverR;
     const PairCoeffs common = plan.common;
     for (std::size_t k = 0; k < n; ++k) {
-        const double r2 = bdx[k] * bdx[k] + bdy[k] * bdy[k] + bdz[k] * bdz[k];
+        // The search's squared distance to the bit: below the cutoff's square (cutoff2Below).
+        const double r2 = squaredDistance(bdx[k], bdy[k], bdz[k]);
         if constexpr (kCommon) {
             s[k] = eval.forceOverR(r2, rDotV[k], common, zeta[k]);
         } else {
@@ -157,48 +180,42 @@ inline void evaluateBatch(const Particles& p, const PairLoopContext& ctx, const 
     }
 }
 
-// Pass 3: the forces added to both particles of every pair, in the order the pairs were found. The
-// pairs of one particle i come together, so its share is summed in registers and stored once per run.
+// Pass 3: the forces added to both particles of every pair, in the order the pairs were found.
 inline void scatterBatch(Particles& p, const PairBatch& batch) {
     const std::size_t n = batch.size;
-    if (n == 0) return;
     double* __restrict fx = p.fx.data();
     double* __restrict fy = p.fy.data();
     double* __restrict fz = p.fz.data();
-    const std::uint32_t* __restrict bi = batch.i.data();
-    const std::uint32_t* __restrict bj = batch.j.data();
-    const double* __restrict bdx = batch.dx.data();
-    const double* __restrict bdy = batch.dy.data();
-    const double* __restrict bdz = batch.dz.data();
-    const double* __restrict s = batch.forceOverR.data();
-    std::uint32_t current = bi[0];
-    double fxi = 0.0, fyi = 0.0, fzi = 0.0;
+    const std::uint32_t* __restrict bi = batch.i;
+    const std::uint32_t* __restrict bj = batch.j;
+    const float* __restrict bdx = batch.dx;
+    const float* __restrict bdy = batch.dy;
+    const float* __restrict bdz = batch.dz;
+    const double* __restrict s = batch.forceOverR;
     for (std::size_t k = 0; k < n; ++k) {
-        if (bi[k] != current) {
-            fx[current] += fxi; fy[current] += fyi; fz[current] += fzi;
-            fxi = fyi = fzi = 0.0;
-            current = bi[k];
-        }
         const double gx = s[k] * bdx[k], gy = s[k] * bdy[k], gz = s[k] * bdz[k];
-        fxi += gx; fyi += gy; fzi += gz;
-        const std::uint32_t j = bj[k];
+        const std::uint32_t i = bi[k], j = bj[k];
+        fx[i] += gx; fy[i] += gy; fz[i] += gz;
         fx[j] -= gx; fy[j] -= gy; fz[j] -= gz;
     }
-    fx[current] += fxi; fy[current] += fyi; fz[current] += fzi;
 }
 
 // The pairs of each row of cells (ix, iy) of slab ix, found into this thread's batch (pass 1), then
 // handed to rowDone(batch).
 template <class RowDone>
-void forEachPairRow(const Particles& p, const CellList& cl, const PairLoopPlan& plan,
-                    const std::vector<StencilEntry>& stencil, double cutoff2, int ix, const RowDone& rowDone) {
+void forEachPairRow(const Particles& p, const PairInputs& in, const CellList& cl, const PairLoopPlan& plan,
+                    const std::vector<StencilColumn>& columns, float cutoff2, int ix, const RowDone& rowDone) {
     const auto& n = cl.cellsPerAxis();
     PairBatch& batch = threadPairBatch();
+    RowColumn row[8];
+    const int nColumns = static_cast<int>(columns.size());
     for (int iy = 0; iy < n[1]; ++iy) {
         batch.size = 0;
+        rowColumns(cl, in, columns, ix, iy, row);
+        const int rowBase = cl.cellIndex(ix, iy, 0);
         for (int iz = 0; iz < n[2]; ++iz) {
-            if (plan.filterInteracting) findCellPairs<true>(p, cl, plan, stencil, cutoff2, ix, iy, iz, batch);
-            else findCellPairs<false>(p, cl, plan, stencil, cutoff2, ix, iy, iz, batch);
+            if (plan.filterInteracting) findCellPairs<true>(p, in, cl, plan, row, nColumns, cutoff2, rowBase + iz, iz, batch);
+            else findCellPairs<false>(p, in, cl, plan, row, nColumns, cutoff2, rowBase + iz, iz, batch);
         }
         rowDone(batch);
     }
@@ -220,11 +237,11 @@ void forEachSlabInColours(int nx, const Slab& slab) {
 }
 
 template <bool kCommon, class Evaluator>
-void colouredSlabs(Particles& p, const PairLoopContext& ctx, const PairLoopPlan& plan, const Evaluator& eval,
-                   double cutoff2, const std::vector<StencilEntry>& stencil) {
+void colouredSlabs(Particles& p, const PairInputs& in, const PairLoopContext& ctx, const PairLoopPlan& plan,
+                   const Evaluator& eval, float cutoff2, const std::vector<StencilColumn>& columns) {
     forEachSlabInColours(ctx.cells.cellsPerAxis()[0], [&](int ix) {
-        forEachPairRow(p, ctx.cells, plan, stencil, cutoff2, ix, [&](PairBatch& batch) {
-            evaluateBatch<kCommon>(p, ctx, plan, eval, batch);
+        forEachPairRow(p, in, ctx.cells, plan, columns, cutoff2, ix, [&](PairBatch& batch) {
+            evaluateBatch<kCommon>(p, in, ctx, plan, eval, batch);
             scatterBatch(p, batch);
         });
     });
@@ -234,14 +251,16 @@ void colouredSlabs(Particles& p, const PairLoopContext& ctx, const PairLoopPlan&
 
 template <class Evaluator>
 void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff) {
-    const std::vector<StencilEntry> stencil = halfStencil(ctx.cells.box());
+    const std::vector<StencilColumn> columns = halfStencilColumns(ctx.cells.box());
     const PairLoopPlan plan = makePairLoopPlan(ctx.table, ctx.cells);
-    const double cutoff2 = cutoff * cutoff;
-    // The switches pick the loop once per call: a species check per candidate only where some pair
-    // the layout does not skip is non-interacting (in forEachPairRow), per-pair coefficients only
-    // where they differ.
-    if (plan.commonCoefficients) detail::colouredSlabs<true>(p, ctx, plan, eval, cutoff2, stencil);
-    else detail::colouredSlabs<false>(p, ctx, plan, eval, cutoff2, stencil);
+    PairInputs& in = sharedPairInputs();
+    fillPairInputs(p, ctx.cells, EvaluatorUsesVelocity<Evaluator>::value, EvaluatorUsesRandom<Evaluator>::value, in);
+    const float cutoff2 = detail::cutoff2Below(cutoff);
+    // The switches pick the loop once per call: a species check per pair only where some pair the
+    // layout does not skip is non-interacting (in forEachPairRow), per-pair coefficients only where
+    // they differ.
+    if (plan.commonCoefficients) detail::colouredSlabs<true>(p, in, ctx, plan, eval, cutoff2, columns);
+    else detail::colouredSlabs<false>(p, in, ctx, plan, eval, cutoff2, columns);
 }
 
 }  // namespace dpd

@@ -3,7 +3,7 @@
 // it goes, so that each pair sees what the pairs before it did (Shardlow's splitting). The result
 // depends on the order, so the order is fixed by the cell layout alone, whatever the number of
 // threads: the pairs are found as the force loop finds them (forces/PairForceLoop.hpp: a batch per
-// row of cells of a slab, cell by cell, particle by particle, stencil run by stencil run), and the
+// row of cells of a slab, cell by cell, run of candidates by run), and the
 // slabs are swept in the force loop's colours. A row's pairs touch particles of slabs ix and ix + 1
 // only, and two slabs of one colour share no particle, so sweeping them at the same time on different
 // threads gives exactly what sweeping them one after the other would.
@@ -15,16 +15,18 @@
 namespace dpd {
 
 // Calls visitRow(batch) once per row of cells, in the order above, with the row's pairs in
-// batch.i, batch.j, batch.dx, dy, dz (r_i - r_j) and batch.size; `visitRow` may change velocities
+// batch.i, batch.j, batch.dx, dy, dz (r_i - r_j, single precision) and batch.size; `visitRow` may change velocities
 // (never positions: the cell list must stay valid) and use the batch's other arrays as scratch.
 template <class VisitRow>
 void sweepPairRows(const Particles& p, const CellList& cells, const PairTable& table, double cutoff,
                    const VisitRow& visitRow) {
-    const std::vector<StencilEntry> stencil = halfStencil(cells.box());
+    const std::vector<StencilColumn> columns = halfStencilColumns(cells.box());
     const PairLoopPlan plan = makePairLoopPlan(table, cells);
-    const double cutoff2 = cutoff * cutoff;
+    PairInputs& in = sharedPairInputs();
+    fillPairInputs(p, cells, false, false, in);  // positions only: the sweep reads velocities as it changes them
+    const float cutoff2 = detail::cutoff2Below(cutoff);
     detail::forEachSlabInColours(cells.cellsPerAxis()[0], [&](int ix) {
-        detail::forEachPairRow(p, cells, plan, stencil, cutoff2, ix, visitRow);
+        detail::forEachPairRow(p, in, cells, plan, columns, cutoff2, ix, visitRow);
     });
 }
 

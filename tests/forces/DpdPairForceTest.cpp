@@ -7,6 +7,7 @@
 // F_ij = forceOverR * r_ij; a force of magnitude F along e is forceOverR = F / r = 2 F.
 #include "forces/DpdPairForce.hpp"
 #include "run/System.hpp"
+#include "SinglePrecisionPairs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -167,10 +168,14 @@ TEST(DpdPairForce, SystemMatchesHandValueWithSigmaFromFluctuationDissipation) {
     const double zeta = sys.random().pairUniform(0, 10, 11);
     const Eigen::Vector3d expected = (13.625 + 7.5 * zeta) * Eigen::Vector3d(0.6, 0.8, 0.0);
     const Eigen::Vector3d f = forceOn(sys, 10);
-    // Positions 2.3 and 2.4 are not exact in binary: r_ij carries ~1e-16 errors, hence 1e-12.
-    EXPECT_NEAR(f.x(), expected.x(), 1e-12);
-    EXPECT_NEAR(f.y(), expected.y(), 1e-12);
-    EXPECT_NEAR(f.z(), expected.z(), 1e-12);
+    // The loop's separations are single precision (cells of 1 in this box): within what that allows.
+    const DpdPairEvaluator<true, true> eval(sys.forceParameters);
+    const double tolerance = test::pairForceError(eval, Eigen::Vector3d(0.3, 0.4, 0.0), kVij, sys.pairs(0, 0), zeta,
+                                                  test::separationComponentError(1.0));
+    EXPECT_LT(tolerance, 1e-4 * expected.norm());  // small against the force all the same
+    EXPECT_NEAR(f.x(), expected.x(), tolerance);
+    EXPECT_NEAR(f.y(), expected.y(), tolerance);
+    EXPECT_NEAR(f.z(), expected.z(), tolerance);
 }
 
 TEST(DpdPairForce, ZeroAtAndBeyondCutoffInThePairLoop) {
@@ -197,13 +202,15 @@ TEST(DpdPairForce, ZeroAtAndBeyondCutoffInThePairLoop) {
         }
     // So that the zeros above mean something: just inside the cutoff, and 0.3 apart across the periodic
     // boundary (x = 0.2 and 4.9), the force is not zero. gamma = 0 (hence sigma = 0) leaves the
-    // conservative term alone: 25 (1 - 0.999) = 0.025 and 25 (1 - 0.3) = 17.5.
+    // conservative term alone: 25 (1 - 0.999) = 0.025 and 25 (1 - 0.3) = 17.5, to the single-precision
+    // separation's error times the force's slope, 25.
+    const double tolerance = 25.0 * test::separationComponentError(1.0);
     const System inside = twoParticles({2.999, 2.0, 2.0}, {2.0, 2.0, 2.0}, vRel, Eigen::Vector3d::Zero(), 25.0, 0.0);
-    EXPECT_NEAR(forceOn(inside, 10).x(), 25.0 * 0.001, 1e-12);
+    EXPECT_NEAR(forceOn(inside, 10).x(), 25.0 * 0.001, tolerance);
     const System periodic = twoParticles({0.2, 2.0, 2.0}, {4.9, 2.0, 2.0}, vRel, Eigen::Vector3d::Zero(), 25.0, 0.0);
     // r_ij = 0.2 - (4.9 - 5) = 0.3 along +x: repelled towards +x with 25 * 0.7 = 17.5.
-    EXPECT_NEAR(forceOn(periodic, 10).x(), 17.5, 1e-12);
-    EXPECT_NEAR(forceOn(periodic, 11).x(), -17.5, 1e-12);
+    EXPECT_NEAR(forceOn(periodic, 10).x(), 17.5, tolerance);
+    EXPECT_NEAR(forceOn(periodic, 11).x(), -17.5, tolerance);
 }
 
 TEST(DpdPairForce, NewtonsThirdLawInASystem) {

@@ -4,9 +4,13 @@
 //   full DPD forces of the new positions and velocities (with the new step's random numbers), which
 //   System::computeForces recomputes from scratch;
 // - Shardlow's forces are the conservative and body forces of the new positions.
-// Round-off: a particle's force sums ~40 pair terms of size up to ~30, and DPD-VV adds the dissipative
-// correction f^D(v(t+dt) - v') to f' instead of evaluating f^D(v(t+dt)) directly, so the two agree to
-// ~40 x 30 x 1e-16 ~ 1e-13; accept 1e-10. Forces with the half-step velocities instead would differ by
+// Round-off: DPD-VV adds the dissipative correction f^D(v(t+dt) - v') to f' instead of evaluating
+// f^D(v(t+dt)) directly, and the pair loop reads velocities in single precision
+// (forces/PairInputs.hpp): each velocity component rounded by at most u |v|max (u = 2^-24), in the
+// three loops involved (v(t+dt), v' and their difference) and in the difference of the two particles'
+// velocities, and the product r.dv by at most 4 u |r| |dv|: at most ~10 u |v|max per pair (|r| < 1),
+// times gamma w_D <= gamma, summed over at most ~40 pairs per particle: 400 u gamma |v|max (~1e-4
+// here). Forces with the half-step velocities instead would differ by
 // gamma w_D e.(dt f / 2) ~ 4.5 x 0.25 x 0.02 x 20 ~ 0.5.
 #include "integrators/Integrator.hpp"
 #include "integrators/PartialPairForces.hpp"
@@ -59,7 +63,11 @@ TEST(IntegratorForces, DpdVvLeavesTheFullForcesOfTheFinalVelocities) {
     sys.computeForces();
     auto dpdvv = scheme("DPDVV");
     for (int k = 0; k < 20; ++k) dpdvv->step(sys);
-    EXPECT_LT(largestForceDifference(sys, fullForces), 1e-10);
+    double vMax = 0.0;
+    for (std::size_t i = 0; i < sys.particles.size(); ++i)
+        vMax = std::max({vMax, std::abs(sys.particles.vx[i]), std::abs(sys.particles.vy[i]), std::abs(sys.particles.vz[i])});
+    const double gamma = sys.pairs(0, 0).gamma;
+    EXPECT_LT(largestForceDifference(sys, fullForces), 400.0 * 0x1p-24 * gamma * vMax);
     // Groot-Warren leaves the forces of its predicted velocity instead: the check can tell them apart.
     auto gw = scheme("GrootWarren");
     gw->step(sys);

@@ -1,0 +1,52 @@
+#include "forces/PairInputs.hpp"
+
+namespace dpd {
+
+std::size_t PairInputs::capacityBytes() const {
+    return sizeof(float) * (x.capacity() + y.capacity() + z.capacity() + vx.capacity() + vy.capacity() + vz.capacity()) +
+           sizeof(std::uint32_t) * id.capacity();
+}
+
+void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, bool ids, PairInputs& in) {
+    const std::size_t n = p.size();
+    in.x.resize(n); in.y.resize(n); in.z.resize(n);
+    if (velocities) { in.vx.resize(n); in.vy.resize(n); in.vz.resize(n); }
+    if (ids) in.id.resize(n);
+    const auto& nc = cells.cellsPerAxis();
+    const Eigen::Vector3d& h = cells.cellSize();
+    const Eigen::Vector3d& lo = cells.box().lo;
+    in.cellX = static_cast<float>(h.x()); in.cellY = static_cast<float>(h.y()); in.cellZ = static_cast<float>(h.z());
+#pragma omp parallel for schedule(static)
+    for (int ix = 0; ix < nc[0]; ++ix)
+        for (int iy = 0; iy < nc[1]; ++iy) {
+            const double cornerX = lo.x() + ix * h.x(), cornerY = lo.y() + iy * h.y();
+            for (int iz = 0; iz < nc[2]; ++iz) {
+                const int c = cells.cellIndex(ix, iy, iz);
+                const double cornerZ = lo.z() + iz * h.z();
+                for (std::uint32_t k = cells.cellStart(c); k < cells.cellStart(c + 1); ++k) {
+                    in.x[k] = static_cast<float>(p.rx[k] - cornerX);
+                    in.y[k] = static_cast<float>(p.ry[k] - cornerY);
+                    in.z[k] = static_cast<float>(p.rz[k] - cornerZ);
+                }
+            }
+        }
+    if (velocities) {
+#pragma omp parallel for simd schedule(static)
+        for (std::size_t k = 0; k < n; ++k) {
+            in.vx[k] = static_cast<float>(p.vx[k]);
+            in.vy[k] = static_cast<float>(p.vy[k]);
+            in.vz[k] = static_cast<float>(p.vz[k]);
+        }
+    }
+    if (ids) {
+#pragma omp parallel for simd schedule(static)
+        for (std::size_t k = 0; k < n; ++k) in.id[k] = static_cast<std::uint32_t>(p.id[k]);
+    }
+}
+
+PairInputs& sharedPairInputs() {
+    static PairInputs inputs;
+    return inputs;
+}
+
+}  // namespace dpd

@@ -1,0 +1,39 @@
+#pragma once
+// What the pair search reads, in single precision and in the cell list's order: each particle's
+// position relative to the lower corner of its cell, and, when the force needs them, its velocity and
+// its id cut to 32 bits (PairRandom keys pair numbers by the low 32 bits of the ids).
+//
+// Why single precision: the search tests ~40 candidates per particle at rho 3 for ~6 pairs, and eight
+// floats per AVX2 instruction halve its cost against four doubles; the velocities and ids come in
+// eight-lane gathers for the same reason. Why cell-local: a position within its cell is smaller than
+// a cell, so a float holds it to ~6e-8 (an absolute position in a box 160 long would keep only
+// ~1e-5), and periodic images need no shift: a neighbour cell's particles stand at their local
+// position plus the stencil offset times the cell size, across the box boundary or not. A pair's
+// separation is then good to ~2e-7 of a cutoff, and its (r_i - r_j).(v_i - v_j) to ~1e-7 relative:
+// errors far below those of the integrator's step, applied equally (with opposite signs) to both
+// particles, so momentum stays exactly conserved.
+#include "core/Particles.hpp"
+#include "neighbour/CellList.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace dpd {
+
+struct PairInputs {
+    std::vector<float> x, y, z;     // r - (lower corner of the particle's cell)
+    std::vector<float> vx, vy, vz;  // filled only when asked for
+    std::vector<std::uint32_t> id;  // low 32 bits of the id, filled only when asked for
+    float cellX = 1.0f, cellY = 1.0f, cellZ = 1.0f;  // the cell size
+
+    std::size_t capacityBytes() const;
+};
+
+// Fills `in` from particles sorted by `cells` (positions always; velocities and ids when asked).
+void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, bool ids, PairInputs& in);
+
+// The pair loop's inputs: one set per process, refilled by every pair loop (which runs one at a time).
+PairInputs& sharedPairInputs();
+
+}  // namespace dpd
