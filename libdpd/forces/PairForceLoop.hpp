@@ -8,9 +8,11 @@
 // receives its contributions in an order fixed by the cell layout alone: forces, and so trajectories,
 // are bit-identical on any number of threads.
 //
-// Inside a slab the work goes by columns of cells (ix, iy fixed) in three passes (PairForceLoop.tpp):
-// find the pairs within the cutoff, evaluate the force of each in a loop the compiler vectorises
-// (random numbers included), then add the forces to the particles in the order the pairs were found.
+// Inside a slab the work goes by rows of cells (ix, iy fixed) in three passes (PairForceLoop.tpp):
+// find the pairs within the cutoff (in single precision on cell-local positions, PairInputs.hpp;
+// the candidates of each home cell are the half stencil's columns along z, PairSearch.hpp), evaluate
+// the force of each in a loop the compiler vectorises (random numbers included; the force itself in
+// double precision), then add the forces to the particles in the order the pairs were found.
 // Frozen-frozen pairs are not even visited when the cell list keeps frozen particles apart.
 #include "core/Particles.hpp"
 #include "core/Species.hpp"

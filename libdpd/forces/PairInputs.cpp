@@ -7,11 +7,21 @@ std::size_t PairInputs::capacityBytes() const {
            sizeof(std::uint32_t) * id.capacity();
 }
 
+namespace {
+// n entries, and no more than twice that held: the inputs are shared by every system of the process
+// (the benchmark runs a million particles, then 32,000), and each should hold what it needs.
+template <class T>
+void fitTo(std::vector<T>& v, std::size_t n) {
+    if (v.capacity() > 2 * n) std::vector<T>().swap(v);
+    v.resize(n);
+}
+}  // namespace
+
 void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, bool ids, PairInputs& in) {
     const std::size_t n = p.size();
-    in.x.resize(n); in.y.resize(n); in.z.resize(n);
-    if (velocities) { in.vx.resize(n); in.vy.resize(n); in.vz.resize(n); }
-    if (ids) in.id.resize(n);
+    fitTo(in.x, n); fitTo(in.y, n); fitTo(in.z, n);
+    if (velocities) { fitTo(in.vx, n); fitTo(in.vy, n); fitTo(in.vz, n); }
+    if (ids) fitTo(in.id, n);
     const auto& nc = cells.cellsPerAxis();
     const Eigen::Vector3d& h = cells.cellSize();
     const Eigen::Vector3d& lo = cells.box().lo;

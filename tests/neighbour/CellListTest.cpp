@@ -189,7 +189,8 @@ void checkCaseOnThreads(const Case& cs) {
     p.clearForces();
     accumulatePairForces(p, ctx, eval, cs.cutoff);
     std::vector<Eigen::Vector3d> f(p.size(), Eigen::Vector3d::Zero());
-    std::vector<double> tolerance(p.size(), 1e-12);
+    std::vector<double> tolerance;
+    tolerance.assign(p.size(), 1e-12);  // (constructed empty: GCC 12 warns falsely about the sized constructor here)
     for (const auto& b : brute) {
         const Eigen::Vector3d dv(p.vx[b.i] - p.vx[b.j], p.vy[b.i] - p.vy[b.j], p.vz[b.i] - p.vz[b.j]);
         const double zeta = random.pairUniform(step, p.id[b.i], p.id[b.j]);
@@ -321,7 +322,8 @@ void checkMixedSpecies(bool extraNonInteracting) {
         for (const auto& v : perThread) visited.insert(visited.end(), v.begin(), v.end());
         std::vector<PairRecord> expected;
         std::vector<Eigen::Vector3d> f(q.size(), Eigen::Vector3d::Zero());
-        std::vector<double> tolerance(q.size(), 1e-12);
+        std::vector<double> tolerance;
+        tolerance.assign(q.size(), 1e-12);
         const double delta = test::separationComponentError(cells.cellSize().maxCoeff());
         long frozenPairs = 0;
         double nearest = 0.0;
