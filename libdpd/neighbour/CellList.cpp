@@ -2,6 +2,8 @@
 
 #include "core/Axis.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -73,18 +75,54 @@ void CellList::sort(Particles& p) {
         const int c = cellIndex(axisCell(p.rx[i], 0), axisCell(p.ry[i], 1), axisCell(p.rz[i], 2));
         keyOf_[i] = 2 * static_cast<std::uint32_t>(c) + (split && isFrozenSpecies(p.species[i]) ? 1u : 0u);
     }
-    std::fill(start_.begin(), start_.end(), 0);
-    for (long i = 0; i < n; ++i) ++start_[keyOf_[i] + 1];
-    for (std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
-    // Stable counting sort: particles keep their relative order inside a cell, so the layout (and
-    // with it the summation order of forces) is a function of the state alone.
-    fill_.assign(start_.begin(), start_.end() - 1);
-    for (long i = 0; i < n; ++i) order_[fill_[keyOf_[i]]++] = static_cast<std::uint32_t>(i);
+    countingSort();
 #pragma omp parallel
     {
         for (auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) gather(*a, scratch_);
         gather(p.id, idScratch_);
         gather(p.species, speciesScratch_);
+    }
+}
+
+void CellList::countingSort() {
+    // Stable counting sort: particles keep their relative order inside a cell, so the layout (and
+    // with it the summation order of forces) is a function of the state alone. In parallel without
+    // per-thread counts: each thread owns a range of keys, reads every key, and counts and places only
+    // its own, in particle order. The keys are read once per thread (4 bytes a particle, streamed);
+    // counts and places are written once. The result does not depend on the number of threads.
+    const std::uint32_t n = static_cast<std::uint32_t>(keyOf_.size());
+    const std::uint32_t nKeys = static_cast<std::uint32_t>(start_.size() - 1);
+    const std::uint32_t* key = keyOf_.data();
+    std::uint32_t* start = start_.data();
+    fill_.resize(nKeys);
+    std::uint32_t* fill = fill_.data();
+    std::uint32_t* order = order_.data();
+    std::vector<std::uint32_t> totals(static_cast<std::size_t>(omp_get_max_threads()), 0);
+    start[0] = 0;
+#pragma omp parallel
+    {
+        const std::uint32_t threads = static_cast<std::uint32_t>(omp_get_num_threads());
+        const std::uint32_t t = static_cast<std::uint32_t>(omp_get_thread_num());
+        const std::uint32_t kBegin = static_cast<std::uint32_t>(std::uint64_t(nKeys) * t / threads);
+        const std::uint32_t kEnd = static_cast<std::uint32_t>(std::uint64_t(nKeys) * (t + 1) / threads);
+        const std::uint32_t width = kEnd - kBegin;
+        // start[k + 1]: the count of key k, then the running sum over this thread's keys up to k.
+        std::fill(start + kBegin + 1, start + kEnd + 1, 0u);
+        for (std::uint32_t i = 0; i < n; ++i)
+            if (key[i] - kBegin < width) ++start[key[i] + 1];
+        for (std::uint32_t k = kBegin + 1; k < kEnd; ++k) start[k + 1] += start[k];
+        totals[t] = width > 0 ? start[kEnd] : 0;
+#pragma omp barrier
+        std::uint32_t before = 0;  // particles of the keys below this thread's
+        for (std::uint32_t s = 0; s < t; ++s) before += totals[s];
+        std::uint32_t begin = before;
+        for (std::uint32_t k = kBegin; k < kEnd; ++k) {
+            fill[k] = begin;
+            begin = start[k + 1] + before;
+            start[k + 1] = begin;
+        }
+        for (std::uint32_t i = 0; i < n; ++i)
+            if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
     }
 }
 

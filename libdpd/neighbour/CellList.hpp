@@ -52,6 +52,8 @@ public:
 private:
     int axisCell(double x, int axis) const;
     void sort(Particles& p);
+    // start_ and order_ from keyOf_ (a stable counting sort, in parallel).
+    void countingSort();
     template <class T>
     void gather(std::vector<T>& a, std::vector<T>& scratch) const;
 
