@@ -20,6 +20,10 @@ inline float cutoff2Below(double cutoff) {
     return f;
 }
 
+// A cell index c in [-count, 2 count) brought into [0, count) through the periodic boundary (by
+// comparison: a division per cell cost as much as the search itself).
+inline int wrapCellIndex(int c, int count) { return c >= count ? c - count : (c < 0 ? c + count : c); }
+
 // A stencil column seen from one row of home cells (ix, iy): its cells are base + jz.
 struct RowColumn {
     int base, dzFirst, cells;
@@ -30,18 +34,17 @@ struct RowColumn {
 inline void rowColumns(const CellList& cl, const PairInputs& in, const std::vector<StencilColumn>& columns, int ix,
                        int iy, RowColumn* out) {
     const auto& n = cl.cellsPerAxis();
-    const auto wrapped = [](int c, int count) { return c >= count ? c - count : (c < 0 ? c + count : c); };
     for (std::size_t k = 0; k < columns.size(); ++k) {
         const StencilColumn& col = columns[k];
-        out[k] = {cl.cellIndex(wrapped(ix + col.dx, n[0]), wrapped(iy + col.dy, n[1]), 0), col.dzFirst, col.cells,
+        out[k] = {cl.cellIndex(wrapCellIndex(ix + col.dx, n[0]), wrapCellIndex(iy + col.dy, n[1]), 0), col.dzFirst, col.cells,
                   static_cast<float>(col.dx) * in.cellX, static_cast<float>(col.dy) * in.cellY};
     }
 }
 
 // Adds to `runs` the candidates of column `col` for the home particles [iBegin, iEnd) of cell
-// `home` = (ix, iy, iz): the column's cells in one run while they follow each other in memory (a new run where
-// the column wraps through the periodic boundary along z), or, with `mobileOnly`, the mobile part of
-// each cell but the home cell, one run each.
+// `home` = (ix, iy, iz): the column's cells in one run while they follow each other in memory (a new
+// run where the column wraps through the periodic boundary along z), or, with `mobileOnly`, the
+// mobile part of each cell but the home cell, one run each.
 inline int addColumnRuns(const CellList& cl, const PairInputs& in, const RowColumn& col, int home, int iz,
                          std::uint32_t iBegin, std::uint32_t iEnd, bool mobileOnly, NeighbourRun* runs, int count) {
     const int nz = cl.cellsPerAxis()[2];
@@ -58,7 +61,7 @@ inline int addColumnRuns(const CellList& cl, const PairInputs& in, const RowColu
     int openCells = 0;
     for (int m = 0; m < col.cells; ++m) {
         const int dz = col.dzFirst + m;
-        const int jz = dz + iz >= nz ? dz + iz - nz : (dz + iz < 0 ? dz + iz + nz : dz + iz);
+        const int jz = wrapCellIndex(iz + dz, nz);
         const int c = col.base + jz;
         const float offZ = static_cast<float>(dz) * in.cellZ;
         if (mobileOnly) {
