@@ -22,12 +22,12 @@
 namespace dpd {
 namespace detail {
 
-// Candidates [jBegin, jEnd) for the home cell's particles [iBegin, iEnd). They lie in up to three
-// consecutive cells along z: a candidate stands at its cell-local position plus (offX, offY, offZ),
-// plus one cell size along z from zStep1 on, and one more from zStep2 on.
 // A step no candidate reaches (indices stay below 2^31 - 1, the search compares them signed).
 inline constexpr std::uint32_t kNoStep = 0x7FFFFFFFu;
 
+// Candidates [jBegin, jEnd) for the home cell's particles [iBegin, iEnd). They lie in up to three
+// consecutive cells along z: a candidate stands at its cell-local position plus (offX, offY, offZ),
+// plus one cell size along z from zStep1 on, and one more from zStep2 on.
 struct NeighbourRun {
     std::uint32_t jBegin, jEnd;
     std::uint32_t zStep1, zStep2;
