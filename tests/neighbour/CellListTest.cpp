@@ -236,6 +236,13 @@ TEST(CellList, PairsMatchBruteForce3DOddAndEvenCounts) {
     checkCase({"cutoff 0.8", 3, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3.45, 2.5, 2.61), 0.8});
 }
 
+TEST(CellList, PairsMatchBruteForceFarFromTheOrigin) {
+    // Coordinates in the thousands: as absolute floats they would keep only ~1e-4 (an ulp of 4096 is
+    // 2.4e-4), far outside the tolerances; the search's cell-local positions keep ~1e-7 anywhere.
+    checkCase({"far from the origin", 3, Eigen::Vector3d(1000.0, -3000.0, 5000.0),
+               Eigen::Vector3d(1005.3, -2995.6, 5004.9), 1.0});
+}
+
 TEST(CellList, PairsMatchBruteForce2D) {
     // 2-D (x-z plane): 3 x 4 cells, then 9 x 3 cells.
     checkCase({"2-D 3x4 cells", 2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(3.5, 1.0, 4.4), 1.0});
