@@ -28,18 +28,15 @@ void PairBatch::allocate(std::size_t capacity) {
     const std::size_t stride = arrayDoubles(capacity);
     constexpr std::size_t kArrays = 13;
     std::vector<double> storage(kArrays * stride);
-    double* base = storage.data();
-    // Array m starts at m strides: whole pages plus m staggers.
-    const auto at = [&](int m) { return base + m * stride; };
-    const auto move = [&](auto*& array, int m, std::size_t elementBytes) {
+    // Array m starts at m strides: whole pages plus m staggers. The entries found so far move along.
+    const auto place = [&](auto*& array, int m) {
         using T = std::remove_pointer_t<std::remove_reference_t<decltype(array)>>;
-        T* fresh = reinterpret_cast<T*>(at(m));
-        if (array && size > 0) std::memcpy(fresh, array, size * elementBytes);
+        T* fresh = reinterpret_cast<T*>(storage.data() + m * stride);
+        if (array && size > 0) std::memcpy(fresh, array, size * sizeof(T));
         array = fresh;
     };
-    move(i, 0, 4); move(j, 1, 4); move(dx, 2, 4); move(dy, 3, 4); move(dz, 4, 4); move(rDotV, 5, 4);
-    move(idLo, 6, 4); move(idHi, 7, 4); move(zeta, 8, 8); move(a, 9, 8); move(gamma, 10, 8); move(sigma, 11, 8);
-    move(forceOverR, 12, 8);
+    place(i, 0); place(j, 1); place(dx, 2); place(dy, 3); place(dz, 4); place(rDotV, 5); place(idLo, 6);
+    place(idHi, 7); place(zeta, 8); place(a, 9); place(gamma, 10); place(sigma, 11); place(forceOverR, 12);
     storage_.swap(storage);
     capacity_ = capacity;
     totalBatchBytes += capacityBytes() - before;

@@ -239,14 +239,18 @@ void forEachSlabInColours(int nx, const Slab& slab) {
     }
 }
 
-template <bool kCommon, class Evaluator>
-void colouredSlabs(Particles& p, const PairInputs& in, const PairLoopContext& ctx, const PairLoopPlan& plan,
-                   const Evaluator& eval, float cutoff2, const std::vector<StencilColumn>& columns) {
-    forEachSlabInColours(ctx.cells.cellsPerAxis()[0], [&](int ix) {
-        forEachPairRow(p, in, ctx.cells, plan, columns, cutoff2, ix, [&](PairBatch& batch) {
-            evaluateBatch<kCommon>(p, in, ctx, plan, eval, batch);
-            scatterBatch(p, batch);
-        });
+// rowDone(batch) for every row of cells with the row's pairs, rows of one slab in order, slabs in
+// colours (the one traversal of the force loop and of the pair sweep): the pair inputs filled (with
+// velocities and ids when asked), the cutoff rounded for the single-precision search.
+template <class RowDone>
+void forEachPairRowInColours(const Particles& p, const CellList& cells, const PairLoopPlan& plan, bool velocities,
+                             bool ids, double cutoff, const RowDone& rowDone) {
+    const std::vector<StencilColumn> columns = halfStencilColumns(cells.box());
+    PairInputs& in = sharedPairInputs();
+    fillPairInputs(p, cells, velocities, ids, in);
+    const float cutoff2 = cutoff2Below(cutoff);
+    forEachSlabInColours(cells.cellsPerAxis()[0], [&](int ix) {
+        forEachPairRow(p, in, cells, plan, columns, cutoff2, ix, rowDone);
     });
 }
 
@@ -254,16 +258,20 @@ void colouredSlabs(Particles& p, const PairInputs& in, const PairLoopContext& ct
 
 template <class Evaluator>
 void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff) {
-    const std::vector<StencilColumn> columns = halfStencilColumns(ctx.cells.box());
     const PairLoopPlan plan = makePairLoopPlan(ctx.table, ctx.cells);
-    PairInputs& in = sharedPairInputs();
-    fillPairInputs(p, ctx.cells, EvaluatorUsesVelocity<Evaluator>::value, EvaluatorUsesRandom<Evaluator>::value, in);
-    const float cutoff2 = detail::cutoff2Below(cutoff);
+    const PairInputs& in = sharedPairInputs();
+    const auto rows = [&](auto common) {
+        detail::forEachPairRowInColours(p, ctx.cells, plan, EvaluatorUsesVelocity<Evaluator>::value,
+                                        EvaluatorUsesRandom<Evaluator>::value, cutoff, [&](detail::PairBatch& batch) {
+                                            detail::evaluateBatch<decltype(common)::value>(p, in, ctx, plan, eval, batch);
+                                            detail::scatterBatch(p, batch);
+                                        });
+    };
     // The switches pick the loop once per call: a species check per pair only where some pair the
     // layout does not skip is non-interacting (in forEachPairRow), per-pair coefficients only where
     // they differ.
-    if (plan.commonCoefficients) detail::colouredSlabs<true>(p, in, ctx, plan, eval, cutoff2, columns);
-    else detail::colouredSlabs<false>(p, in, ctx, plan, eval, cutoff2, columns);
+    if (plan.commonCoefficients) rows(std::true_type{});
+    else rows(std::false_type{});
 }
 
 }  // namespace dpd

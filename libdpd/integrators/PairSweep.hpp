@@ -20,14 +20,8 @@ namespace dpd {
 template <class VisitRow>
 void sweepPairRows(const Particles& p, const CellList& cells, const PairTable& table, double cutoff,
                    const VisitRow& visitRow) {
-    const std::vector<StencilColumn> columns = halfStencilColumns(cells.box());
-    const PairLoopPlan plan = makePairLoopPlan(table, cells);
-    PairInputs& in = sharedPairInputs();
-    fillPairInputs(p, cells, false, false, in);  // positions only: the sweep reads velocities as it changes them
-    const float cutoff2 = detail::cutoff2Below(cutoff);
-    detail::forEachSlabInColours(cells.cellsPerAxis()[0], [&](int ix) {
-        detail::forEachPairRow(p, in, cells, plan, columns, cutoff2, ix, visitRow);
-    });
+    // Positions only: the sweep reads the velocities as it changes them, and draws its own numbers.
+    detail::forEachPairRowInColours(p, cells, makePairLoopPlan(table, cells), false, false, cutoff, visitRow);
 }
 
 }  // namespace dpd
