@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <type_traits>
 #include <vector>
+#include <vector>
 
 namespace dpd {
 
@@ -45,11 +46,22 @@ std::vector<StencilColumn> halfStencilColumns(const Box& box);
 // dx = dy = 0 and dz = +1. Along an inactive (2-D) axis only offset 0 is kept.
 std::vector<StencilEntry> halfStencil(const Box& box);
 
+// Groot and Warren's predicted velocities v~ = v + shift f, made by the pair loop as it reads the
+// velocities (no pass of their own over the particles, and v itself is left alone): with shift != 0
+// the pair forces see v + shift f for the particles of every species not marked frozen (a frozen
+// particle keeps its wall's velocity), f being the forces the particles hold when the loop starts,
+// and the loop then *replaces* the forces with the pair forces instead of adding to them.
+struct VelocityPredictor {
+    double shift = 0.0;
+    const std::vector<std::uint8_t>* frozenOfSpecies = nullptr;  // null or all zero: nothing frozen
+};
+
 struct PairLoopContext {
     const CellList& cells;
     const PairTable& table;
     const PairRandom& random;
     std::uint64_t step;
+    VelocityPredictor predictor{};
 };
 
 // What an evaluator needs beyond the separation. An evaluator that declares
@@ -65,7 +77,8 @@ struct EvaluatorUsesVelocity : std::true_type {};
 template <class E>
 struct EvaluatorUsesVelocity<E, std::void_t<decltype(E::kUsesVelocity)>> : std::bool_constant<E::kUsesVelocity> {};
 
-// Adds to p.f the force of every interacting pair closer than the cutoff. The evaluator gives the
+// Adds to p.f the force of every interacting pair closer than the cutoff (or, with ctx.predictor's
+// shift != 0, replaces p.f with those forces, see VelocityPredictor). The evaluator gives the
 // force over r for one pair: double forceOverR(double r2, double rDotV, const PairCoeffs&, double zeta),
 // zeta being ctx.random.pairUniform(step, id_i, id_j). The particles must be sorted by ctx.cells.
 template <class Evaluator>

@@ -259,9 +259,14 @@ void forEachPairRowInColours(const Particles& p, const CellList& cells, const Pa
 template <class Evaluator>
 void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff) {
     const PairLoopPlan plan = makePairLoopPlan(ctx.table, ctx.cells);
-    const PairInputs& in = sharedPairInputs();
+    PairInputs& in = sharedPairInputs();
+    constexpr bool kVelocity = EvaluatorUsesVelocity<Evaluator>::value;
+    const bool predict = ctx.predictor.shift != 0.0;
+    // The predicted velocities (and the forces cleared) before the fill, which then leaves them.
+    if (predict && kVelocity) fillPredictedVelocities(p, ctx.predictor.shift, ctx.predictor.frozenOfSpecies, in);
+    else if (predict) p.clearForces();
     const auto rows = [&](auto common) {
-        detail::forEachPairRowInColours(p, ctx.cells, plan, EvaluatorUsesVelocity<Evaluator>::value,
+        detail::forEachPairRowInColours(p, ctx.cells, plan, kVelocity && !predict,
                                         EvaluatorUsesRandom<Evaluator>::value, cutoff, [&](detail::PairBatch& batch) {
                                             detail::evaluateBatch<decltype(common)::value>(p, in, ctx, plan, eval, batch);
                                             detail::scatterBatch(p, batch);

@@ -1,5 +1,7 @@
 #include "forces/PairInputs.hpp"
 
+#include <algorithm>
+
 namespace dpd {
 
 std::size_t PairInputs::capacityBytes() const {
@@ -51,6 +53,46 @@ void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, 
     if (ids) {
 #pragma omp parallel for simd schedule(static)
         for (std::size_t k = 0; k < n; ++k) in.id[k] = static_cast<std::uint32_t>(p.id[k]);
+    }
+}
+
+void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies,
+                             PairInputs& in) {
+    const std::size_t n = p.size();
+    fitTo(in.vx, n); fitTo(in.vy, n); fitTo(in.vz, n);
+    double* __restrict fx = p.fx.data();
+    double* __restrict fy = p.fy.data();
+    double* __restrict fz = p.fz.data();
+    const double* __restrict vx = p.vx.data();
+    const double* __restrict vy = p.vy.data();
+    const double* __restrict vz = p.vz.data();
+    float* __restrict ux = in.vx.data();
+    float* __restrict uy = in.vy.data();
+    float* __restrict uz = in.vz.data();
+    const bool anyFrozen = frozenOfSpecies &&
+                           std::any_of(frozenOfSpecies->begin(), frozenOfSpecies->end(), [](std::uint8_t f) { return f != 0; });
+    if (!anyFrozen) {
+#pragma omp parallel for simd schedule(static)
+        for (std::size_t k = 0; k < n; ++k) {
+            ux[k] = static_cast<float>(vx[k] + shift * fx[k]);
+            uy[k] = static_cast<float>(vy[k] + shift * fy[k]);
+            uz[k] = static_cast<float>(vz[k] + shift * fz[k]);
+            fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
+        }
+        return;
+    }
+    // Per species: v + 0 f is v exactly (forces are finite), so a frozen particle's velocity passes as it is.
+    std::vector<double> shiftOf(256, shift);
+    for (std::size_t s = 0; s < frozenOfSpecies->size(); ++s)
+        if ((*frozenOfSpecies)[s]) shiftOf[s] = 0.0;
+    const std::uint8_t* __restrict species = p.species.data();
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+        const double c = shiftOf[species[k]];
+        ux[k] = static_cast<float>(vx[k] + c * fx[k]);
+        uy[k] = static_cast<float>(vy[k] + c * fy[k]);
+        uz[k] = static_cast<float>(vz[k] + c * fz[k]);
+        fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
     }
 }
 

@@ -13,9 +13,16 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
     const long n = static_cast<long>(p.size());
     halfKickAndDrift(sys);
     const WallCounters walls = endMove(sys);
-    // Keep v + dt f / 2 aside and predict v~ = v + lambda dt f = (v + dt f / 2) + (lambda - 1/2) dt f.
-    hx_.resize(n); hy_.resize(n); hz_.resize(n);
+    // v~ = v + lambda dt f = (v + dt f / 2) + (lambda - 1/2) dt f.
     const double predict = (lambda_ - 0.5) * dt;
+    if (!sys.hasVelocityDependentNonPairForces()) {
+        sys.computeForces(predict);
+        kick(sys, halfDt);
+        sys.completeWalls();
+        return walls;
+    }
+    // Keep v + dt f / 2 aside and write v~ into v for every force that reads it.
+    hx_.resize(n); hy_.resize(n); hz_.resize(n);
     forEachParticle(sys, [&](long i, auto mobile) {
         hx_[i] = p.vx[i]; hy_[i] = p.vy[i]; hz_[i] = p.vz[i];
         if (!mobile) return;

@@ -5,6 +5,12 @@
 //   f(t+dt) = f(r(t+dt), v~)
 //   v(t+dt) = v + dt (f + f(t+dt)) / 2
 // lambda = 0.5 is plain velocity Verlet; 0.65 is the usual choice.
+//
+// After the drift, v holds v + dt f / 2 and v~ is that plus (lambda - 1/2) dt f. The pair loop makes
+// v~ itself as it reads the velocities (System::computeForces(shift)), so v + dt f / 2 stays in v and
+// the step ends with one more half kick: no pass of its own for the prediction and no copy of v.
+// Where other forces depend on the velocities (tunable-slip walls) they must see v~ too: there v~ is
+// written into v for the force computation and v + dt f / 2 kept aside.
 #include "integrators/Integrator.hpp"
 
 #include <vector>
@@ -22,7 +28,7 @@ public:
 
 private:
     double lambda_;
-    std::vector<double> hx_, hy_, hz_;  // v + dt f / 2, kept while the new forces are computed
+    std::vector<double> hx_, hy_, hz_;  // v + dt f / 2, kept aside where v must hold v~
 };
 
 }  // namespace dpd

@@ -79,11 +79,16 @@ void System::sortByCell() {
     cells_.sortParticles(particles, frozenOfSpecies_);
 }
 
-void System::computeForces() {
+void System::computeForces() { computeForces(0.0); }
+
+void System::computeForces(double predictorShift) {
     if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
+    if (predictorShift != 0.0 && hasVelocityDependentNonPairForces())
+        throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with tunable-slip walls");
     const ScopedTimer timer(stepTimes ? &stepTimes->forces : nullptr);
-    particles.clearForces();
-    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step)};
+    // With a predictor the pair loop replaces the forces (it reads them first).
+    if (predictorShift == 0.0) particles.clearForces();
+    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step), {predictorShift, &frozenOfSpecies_}};
     pairKernel_(particles, ctx, forceParameters);
     bodyForce.apply(particles, frozenOfSpecies_, box);
     if (tunableSlipWalls_)

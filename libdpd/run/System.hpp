@@ -67,6 +67,13 @@ public:
     // Forces at the current positions and velocities: pair forces (keyed to the current step's random
     // numbers) plus the body force, plus the forces of tunable-slip walls when there are any. Requires sortByCell() since the last move.
     void computeForces();
+    // The same with the velocities predicted as v + predictorShift f (f the forces held on entry;
+    // frozen particles keep theirs), in the pair loop's pass over the particles: v itself is left
+    // alone. Only where the pair forces are the only velocity-dependent ones (see below); throws
+    // std::logic_error otherwise.
+    void computeForces(double predictorShift);
+    // Whether any force but the pair forces depends on the velocities (tunable-slip walls' friction).
+    bool hasVelocityDependentNonPairForces() const { return tunableSlipWalls_; }
     // Reflects fluid particles that crossed a wall during the last move (call before wrapping, that is
     // before wrapPositions or sortByCell).
     // The geometry wall's counts, if there is one, come last in the per-wall lists.

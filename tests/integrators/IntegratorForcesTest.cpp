@@ -84,3 +84,40 @@ TEST(IntegratorForces, ShardlowLeavesTheConservativeAndBodyForces) {
     // And these are not the full DPD forces.
     EXPECT_GT(largestForceDifference(sys, fullForces), 1.0);
 }
+
+// Groot-Warren's predictor folded into the pair loop (System::computeForces(shift)): the forces are
+// those of the velocities v + shift f, computed by writing them into v first, and v is left alone.
+// Both round the same double v + shift f to single precision in the pair loop, so they agree to the
+// bit unless the compiler contracts one of the two multiply-adds into an FMA and not the other: then
+// a velocity may differ by one float ulp, u |v|max, within the DPD-VV bound above (400 u gamma |v|max).
+TEST(IntegratorForces, PredictorInThePairLoopSeesThePredictedVelocities) {
+    System explicitPrediction = makeStandardFluid(fluid());
+    auto gw = scheme("GrootWarren");
+    for (int k = 0; k < 5; ++k) gw->step(explicitPrediction);  // forces of a moving fluid
+    System folded = explicitPrediction;
+    const Particles start = folded.particles;
+    const double shift = 0.15 * folded.dt();
+    Particles& e = explicitPrediction.particles;
+    double vMax = 0.0;
+    for (std::size_t i = 0; i < e.size(); ++i) {
+        e.vx[i] += shift * e.fx[i];
+        e.vy[i] += shift * e.fy[i];
+        e.vz[i] += shift * e.fz[i];
+        vMax = std::max({vMax, std::abs(e.vx[i]), std::abs(e.vy[i]), std::abs(e.vz[i])});
+    }
+    explicitPrediction.computeForces();
+    folded.computeForces(shift);
+    double worst = 0.0, unpredicted = 0.0;
+    for (std::size_t i = 0; i < e.size(); ++i) {
+        ASSERT_EQ(folded.particles.vx[i], start.vx[i]);
+        ASSERT_EQ(folded.particles.vz[i], start.vz[i]);
+        worst = std::max({worst, std::abs(folded.particles.fx[i] - e.fx[i]), std::abs(folded.particles.fy[i] - e.fy[i]),
+                          std::abs(folded.particles.fz[i] - e.fz[i])});
+    }
+    EXPECT_LT(worst, 400.0 * 0x1p-24 * folded.pairs(0, 0).gamma * vMax);
+    // The forces of the unpredicted velocities are told apart (shift dt |f| ~ 0.1 in v).
+    folded.computeForces();
+    for (std::size_t i = 0; i < e.size(); ++i) unpredicted = std::max(unpredicted, std::abs(folded.particles.fx[i] - e.fx[i]));
+    EXPECT_GT(unpredicted, 0.01);
+}
+
