@@ -1,6 +1,7 @@
 #include "forces/PairInputs.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace dpd {
 
@@ -82,7 +83,8 @@ void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::
         return;
     }
     // Per species: v + 0 f is v exactly (forces are finite), so a frozen particle's velocity passes as it is.
-    std::vector<double> shiftOf(256, shift);
+    std::array<double, 256> shiftOf;
+    shiftOf.fill(shift);
     for (std::size_t s = 0; s < frozenOfSpecies->size(); ++s)
         if ((*frozenOfSpecies)[s]) shiftOf[s] = 0.0;
     const std::uint8_t* __restrict species = p.species.data();
