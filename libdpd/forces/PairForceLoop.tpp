@@ -154,8 +154,8 @@ inline void evaluateBatch(const Particles& p, const PairInputs& in, const PairLo
     double* __restrict cs = batch.sigma;
     constexpr bool kRandom = EvaluatorUsesRandom<Evaluator>::value;
     constexpr bool kVelocity = EvaluatorUsesVelocity<Evaluator>::value;
-    // Eight pairs at a time with AVX2 gathers (PairGather.hpp), the rest one by one.
-    const PairGatherInput gatherIn{in.vx.data(), in.vy.data(), in.vz.data(), in.id.data(), bi, bj, bdx, bdy, bdz};
+    // Eight pairs at a time with AVX2 (PairGather.hpp), the rest one by one.
+    const PairGatherInput gatherIn{in.kinematics.data(), bi, bj, bdx, bdy, bdz};
     const PairGatherOutput gatherOut{rDotV, batch.idLo, batch.idHi};
     const std::size_t gathered = gatherPairKinematics<kVelocity, kRandom>(gatherIn, gatherOut, n);
     gatherPairKinematicsScalar<kVelocity, kRandom>(gatherIn, gatherOut, gathered, n);

@@ -6,8 +6,7 @@
 namespace dpd {
 
 std::size_t PairInputs::capacityBytes() const {
-    return sizeof(float) * (x.capacity() + y.capacity() + z.capacity() + vx.capacity() + vy.capacity() + vz.capacity()) +
-           sizeof(std::uint32_t) * id.capacity();
+    return sizeof(float) * (x.capacity() + y.capacity() + z.capacity()) + sizeof(PairKinematics) * kinematics.capacity();
 }
 
 namespace {
@@ -23,8 +22,7 @@ void fitTo(std::vector<T>& v, std::size_t n) {
 void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, bool ids, PairInputs& in) {
     const std::size_t n = p.size();
     fitTo(in.x, n); fitTo(in.y, n); fitTo(in.z, n);
-    if (velocities) { fitTo(in.vx, n); fitTo(in.vy, n); fitTo(in.vz, n); }
-    if (ids) fitTo(in.id, n);
+    if (velocities || ids) fitTo(in.kinematics, n);
     const auto& nc = cells.cellsPerAxis();
     const Eigen::Vector3d& h = cells.cellSize();
     const Eigen::Vector3d& lo = cells.box().lo;
@@ -43,41 +41,40 @@ void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, 
                 }
             }
         }
+    PairKinematics* __restrict kin = in.kinematics.data();
     if (velocities) {
-#pragma omp parallel for simd schedule(static)
+#pragma omp parallel for schedule(static)
         for (std::size_t k = 0; k < n; ++k) {
-            in.vx[k] = static_cast<float>(p.vx[k]);
-            in.vy[k] = static_cast<float>(p.vy[k]);
-            in.vz[k] = static_cast<float>(p.vz[k]);
+            kin[k].vx = static_cast<float>(p.vx[k]);
+            kin[k].vy = static_cast<float>(p.vy[k]);
+            kin[k].vz = static_cast<float>(p.vz[k]);
         }
     }
     if (ids) {
-#pragma omp parallel for simd schedule(static)
-        for (std::size_t k = 0; k < n; ++k) in.id[k] = static_cast<std::uint32_t>(p.id[k]);
+#pragma omp parallel for schedule(static)
+        for (std::size_t k = 0; k < n; ++k) kin[k].id = static_cast<std::uint32_t>(p.id[k]);
     }
 }
 
 void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies,
                              PairInputs& in) {
     const std::size_t n = p.size();
-    fitTo(in.vx, n); fitTo(in.vy, n); fitTo(in.vz, n);
+    fitTo(in.kinematics, n);
     double* __restrict fx = p.fx.data();
     double* __restrict fy = p.fy.data();
     double* __restrict fz = p.fz.data();
     const double* __restrict vx = p.vx.data();
     const double* __restrict vy = p.vy.data();
     const double* __restrict vz = p.vz.data();
-    float* __restrict ux = in.vx.data();
-    float* __restrict uy = in.vy.data();
-    float* __restrict uz = in.vz.data();
+    PairKinematics* __restrict kin = in.kinematics.data();
     const bool anyFrozen = frozenOfSpecies &&
                            std::any_of(frozenOfSpecies->begin(), frozenOfSpecies->end(), [](std::uint8_t f) { return f != 0; });
     if (!anyFrozen) {
-#pragma omp parallel for simd schedule(static)
+#pragma omp parallel for schedule(static)
         for (std::size_t k = 0; k < n; ++k) {
-            ux[k] = static_cast<float>(vx[k] + shift * fx[k]);
-            uy[k] = static_cast<float>(vy[k] + shift * fy[k]);
-            uz[k] = static_cast<float>(vz[k] + shift * fz[k]);
+            kin[k].vx = static_cast<float>(vx[k] + shift * fx[k]);
+            kin[k].vy = static_cast<float>(vy[k] + shift * fy[k]);
+            kin[k].vz = static_cast<float>(vz[k] + shift * fz[k]);
             fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
         }
         return;
@@ -91,9 +88,9 @@ void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
         const double c = shiftOf[species[k]];
-        ux[k] = static_cast<float>(vx[k] + c * fx[k]);
-        uy[k] = static_cast<float>(vy[k] + c * fy[k]);
-        uz[k] = static_cast<float>(vz[k] + c * fz[k]);
+        kin[k].vx = static_cast<float>(vx[k] + c * fx[k]);
+        kin[k].vy = static_cast<float>(vy[k] + c * fy[k]);
+        kin[k].vz = static_cast<float>(vz[k] + c * fz[k]);
         fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
     }
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -17,11 +18,11 @@ TEST(PairGather, EightAtATimeMatchesTheScalarFormToTheBit) {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<float> u(-3.0f, 3.0f);
     std::uniform_int_distribution<std::uint32_t> pick(0, particles - 1);
-    std::vector<float> vx(particles), vy(particles), vz(particles), dx(pairs), dy(pairs), dz(pairs);
-    std::vector<std::uint32_t> id(particles);
-    for (std::size_t p = 0; p < particles; ++p) {
-        vx[p] = u(rng); vy[p] = u(rng); vz[p] = u(rng);
-        id[p] = static_cast<std::uint32_t>(rng());  // ids above 2^31 too: the order is unsigned
+    std::vector<float> dx(pairs), dy(pairs), dz(pairs);
+    std::vector<dpd::PairKinematics> kin(particles);
+    for (auto& entry : kin) {
+        entry.vx = u(rng); entry.vy = u(rng); entry.vz = u(rng);
+        entry.id = static_cast<std::uint32_t>(rng());  // ids above 2^31 too: the order is unsigned
     }
     std::vector<std::uint32_t> bi(pairs), bj(pairs), lo(pairs), hi(pairs), loScalar(pairs), hiScalar(pairs);
     for (std::size_t k = 0; k < pairs; ++k) {
@@ -29,7 +30,7 @@ TEST(PairGather, EightAtATimeMatchesTheScalarFormToTheBit) {
         dx[k] = u(rng); dy[k] = u(rng); dz[k] = u(rng);
     }
     std::vector<float> rDotV(pairs), rDotVScalar(pairs);
-    const PairGatherInput in{vx.data(), vy.data(), vz.data(), id.data(), bi.data(), bj.data(), dx.data(), dy.data(), dz.data()};
+    const PairGatherInput in{kin.data(), bi.data(), bj.data(), dx.data(), dy.data(), dz.data()};
     const std::size_t gathered = gatherPairKinematics<true, true>(in, {rDotV.data(), lo.data(), hi.data()}, pairs);
 #if defined(__AVX2__)
     EXPECT_EQ(gathered, pairs / 8 * 8);
@@ -39,7 +40,11 @@ TEST(PairGather, EightAtATimeMatchesTheScalarFormToTheBit) {
         EXPECT_EQ(rDotV[k], rDotVScalar[k]) << "pair " << k;
         EXPECT_EQ(lo[k], loScalar[k]) << "pair " << k;
         EXPECT_EQ(hi[k], hiScalar[k]) << "pair " << k;
-        EXPECT_EQ(lo[k], std::min(id[bi[k]], id[bj[k]])) << "pair " << k;
-        EXPECT_EQ(hi[k], std::max(id[bi[k]], id[bj[k]])) << "pair " << k;
+        EXPECT_EQ(lo[k], std::min(kin[bi[k]].id, kin[bj[k]].id)) << "pair " << k;
+        EXPECT_EQ(hi[k], std::max(kin[bi[k]].id, kin[bj[k]].id)) << "pair " << k;
+        // The transposed loads put each particle's components in the right lanes.
+        const float dvx = kin[bi[k]].vx - kin[bj[k]].vx, dvy = kin[bi[k]].vy - kin[bj[k]].vy,
+                    dvz = kin[bi[k]].vz - kin[bj[k]].vz;
+        EXPECT_EQ(rDotV[k], std::fma(dz[k], dvz, std::fma(dx[k], dvx, dy[k] * dvy))) << "pair " << k;
     }
 }
