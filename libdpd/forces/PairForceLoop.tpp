@@ -83,6 +83,28 @@ inline int addColumnRuns(const CellList& cl, const PairInputs& in, const RowColu
     return count;
 }
 
+// Stages the row's neighbour columns (all but the home column, columns[0]) level by level.
+inline void stageRow(const CellList& cl, const PairInputs& in, const PairLoopPlan& plan, const RowColumn* columns,
+                     int nColumns, RowStage& stage) {
+    const int nz = cl.cellsPerAxis()[2];
+    std::size_t count = 0;
+    for (int k = 1; k < nColumns; ++k) count += cl.cellStart(columns[k].base + nz) - cl.cellStart(columns[k].base);
+    stage.reserve(count, nz);
+    const PairSearchInput search{in.x.data(), in.y.data(), in.z.data(), in.cellZ, 0.0f};
+    const bool split = plan.skipFrozenPairs;
+    const StageOutput out(stage);
+    std::uint32_t s = 0;
+    for (int c = 0; c < nz; ++c) {
+        stage.levelStart[c] = s;
+        for (int k = 1; k < nColumns; ++k) {
+            const int cell = columns[k].base + c;
+            s = stageCell(search, cl.cellStart(cell), cl.cellStart(cell + 1), split ? cl.mobileEnd(cell) : cl.cellStart(cell + 1),
+                          columns[k].offX, columns[k].offY, c, split, out, s);
+        }
+    }
+    stage.levelStart[nz] = s;
+}
+
 // The runs of home cell (ix, iy, iz), given its row's columns: its mobile particles (all of them
 // unless the plan skips frozen pairs) meet every particle of the half stencil, its frozen ones only
 // the mobile particles.
@@ -114,22 +136,34 @@ inline std::size_t dropNonInteracting(const Particles& p, const PairLoopPlan& pl
 }
 
 // Pass 1: the pairs of home cell (ix, iy, iz) closer than the cutoff, appended to the batch
-// (PairSearch.hpp). With kFilter the pairs of species that do not interact are dropped again.
+// (PairSearch.hpp). Away from the z boundary the home column's runs, then the window of the row's
+// stage; at the boundary (where the window would wrap) every column's runs. With kFilter the pairs
+// of species that do not interact are dropped again.
 template <bool kFilter>
 inline void findCellPairs(const Particles& p, const PairInputs& in, const CellList& cl, const PairLoopPlan& plan,
-                          const RowColumn* columns, int nColumns, float cutoff2, int home, int iz, PairBatch& batch) {
-    if (cl.cellStart(home) == cl.cellStart(home + 1)) return;
+                          const RowColumn* columns, int nColumns, const RowStage& stage, float cutoff2, int home, int iz,
+                          PairBatch& batch) {
+    const std::uint32_t aBegin = cl.cellStart(home), aEnd = cl.cellStart(home + 1);
+    if (aBegin == aEnd) return;
+    const int nz = cl.cellsPerAxis()[2];
+    const bool window = iz > 0 && iz < nz - 1;
     NeighbourRun runs[40];
-    const int nRuns = neighbourRuns(cl, in, plan, columns, nColumns, home, iz, runs);
+    const int nRuns = neighbourRuns(cl, in, plan, columns, window ? 1 : nColumns, home, iz, runs);
     std::size_t candidates = 0;
     for (int r = 0; r < nRuns; ++r)
         candidates += std::size_t(runs[r].jEnd - runs[r].jBegin) * (runs[r].iEnd - runs[r].iBegin);
+    const std::uint32_t wBegin = stage.levelStart[iz - (window ? 1 : 0)], wEnd = window ? stage.levelStart[iz + 2] : wBegin;
+    candidates += std::size_t(wEnd - wBegin) * (aEnd - aBegin);
     batch.reserveMore(candidates + 8);
     const PairSearchInput search{in.x.data(), in.y.data(), in.z.data(), in.cellZ, cutoff2};
     const PairSearchOutput out{batch.i, batch.j, batch.dx, batch.dy, batch.dz};
     const std::size_t first = batch.size;
     std::size_t k = first;
     for (int r = 0; r < nRuns; ++r) k = appendRunPairs(runs[r], search, out, k);
+    if (window) {
+        const std::uint32_t aMobileEnd = plan.skipFrozenPairs ? cl.mobileEnd(home) : aEnd;
+        k = appendWindowPairs(stage, wBegin, wEnd, iz, aBegin, aMobileEnd, aEnd, plan.skipFrozenPairs, search, out, k);
+    }
     if constexpr (kFilter) k = dropNonInteracting(p, plan, batch, first, k);
     batch.size = k;
 }
@@ -210,15 +244,19 @@ void forEachPairRow(const Particles& p, const PairInputs& in, const CellList& cl
                     const std::vector<StencilColumn>& columns, float cutoff2, int ix, const RowDone& rowDone) {
     const auto& n = cl.cellsPerAxis();
     PairBatch& batch = threadPairBatch();
+    RowStage& stage = threadRowStage();
     RowColumn row[8];
     const int nColumns = static_cast<int>(columns.size());
     for (int iy = 0; iy < n[1]; ++iy) {
         batch.size = 0;
         rowColumns(cl, in, columns, ix, iy, row);
+        stageRow(cl, in, plan, row, nColumns, stage);
         const int rowBase = cl.cellIndex(ix, iy, 0);
         for (int iz = 0; iz < n[2]; ++iz) {
-            if (plan.filterInteracting) findCellPairs<true>(p, in, cl, plan, row, nColumns, cutoff2, rowBase + iz, iz, batch);
-            else findCellPairs<false>(p, in, cl, plan, row, nColumns, cutoff2, rowBase + iz, iz, batch);
+            if (plan.filterInteracting)
+                findCellPairs<true>(p, in, cl, plan, row, nColumns, stage, cutoff2, rowBase + iz, iz, batch);
+            else
+                findCellPairs<false>(p, in, cl, plan, row, nColumns, stage, cutoff2, rowBase + iz, iz, batch);
         }
         rowDone(batch);
     }

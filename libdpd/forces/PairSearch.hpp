@@ -11,9 +11,19 @@
 // together: every store writes eight entries, so the batch needs seven entries of room beyond the
 // pairs. The scalar form visits the pairs in the same order, with the same arithmetic (the squared
 // distance as two fused multiply-adds), so it finds the same pairs in the same order.
+//
+// The neighbour columns other than the home one hold ~9 candidates each for a home cell, one more
+// than a block: searched column by column, the second block of a column is mostly empty lanes. So a
+// row of home cells first stages its neighbour columns level by level (RowStage: for each z index,
+// the particles of that cell of every column), and a home cell away from the z boundary then finds
+// all its candidates but the home column's in one contiguous window of three levels, searched in
+// full blocks (~5 blocks per home particle instead of ~7 at rho 3). Each particle is staged once per
+// column, not once per home cell that sees it.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #if defined(__AVX2__)
 #include <immintrin.h>
@@ -46,6 +56,41 @@ struct PairSearchOutput {
     std::uint32_t *i, *j;
     float *dx, *dy, *dz;
 };
+
+// The neighbour columns of one row of home cells (all but the home column), staged level by level:
+// for each z index c, the particles of cell c of each column in turn, at their cell-local position
+// plus the column's x and y offsets (z stays cell-local; `level` is c), with their indices, and,
+// where frozen particles are kept apart, whether each is mobile. Each thread keeps its own.
+struct RowStage {
+    std::vector<float> x, y, z;
+    std::vector<std::uint32_t> j;
+    std::vector<std::int32_t> level;
+    std::vector<std::int32_t> mobile;        // all bits set for a mobile candidate (filled when split)
+    std::vector<std::uint32_t> levelStart;   // level c is entries [levelStart[c], levelStart[c + 1])
+
+    // Room for `count` entries plus the seven lanes a block of eight may read or write beyond them.
+    void reserve(std::size_t count, int levels) {
+        levelStart.resize(static_cast<std::size_t>(levels) + 1);
+        if (count + 8 <= j.size()) return;
+        const std::size_t n = std::max(count + 8, 2 * j.size());
+        x.resize(n); y.resize(n); z.resize(n); j.resize(n); level.resize(n); mobile.resize(n);
+    }
+};
+
+// Where stageCell writes: the stage's arrays (raw pointers: a vector's own pointer would be reloaded
+// after every vector store, which may alias it).
+struct StageOutput {
+    float *x, *y, *z;
+    std::uint32_t* j;
+    std::int32_t *level, *mobile;
+    explicit StageOutput(RowStage& st)
+        : x(st.x.data()), y(st.y.data()), z(st.z.data()), j(st.j.data()), level(st.level.data()), mobile(st.mobile.data()) {}
+};
+
+inline RowStage& threadRowStage() {
+    thread_local RowStage stage;
+    return stage;
+}
 
 // Squared distance as the search computes it, and as the force pass recomputes it to the bit.
 inline float squaredDistance(float dx, float dy, float dz) { return std::fma(dz, dz, std::fma(dy, dy, dx * dx)); }
@@ -103,6 +148,66 @@ inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput
     }
     return k;
 }
+// Appends particles [jBegin, jEnd) of one cell at `level` to the stage from entry s on (those before
+// mobileEnd mobile); returns the new end.
+inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, std::uint32_t jEnd, std::uint32_t mobileEnd,
+                               float offX, float offY, int level, bool split, const StageOutput& st, std::uint32_t s) {
+    const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    for (std::uint32_t j = jBegin; j < jEnd; j += 8) {
+        const __m256i valid = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(jEnd - j)), lanes);
+        const __m256i js = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(j)), lanes);
+        // Lanes past the cell's end are written too, and overwritten by the next cell's particles.
+        _mm256_storeu_ps(st.x + s, _mm256_add_ps(_mm256_maskload_ps(in.x + j, valid), _mm256_set1_ps(offX)));
+        _mm256_storeu_ps(st.y + s, _mm256_add_ps(_mm256_maskload_ps(in.y + j, valid), _mm256_set1_ps(offY)));
+        _mm256_storeu_ps(st.z + s, _mm256_maskload_ps(in.z + j, valid));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.j + s), js);
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.level + s), _mm256_set1_epi32(level));
+        if (split)
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.mobile + s),
+                                _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(mobileEnd)), js));
+        s += std::min<std::uint32_t>(8, jEnd - j);
+    }
+    return s;
+}
+
+// The pairs of home particles [iBegin, iEnd) of the cell at level iz with the staged candidates
+// [wBegin, wEnd) (levels iz - 1 to iz + 1); home particles from iMobileEnd on are frozen and meet
+// only the mobile candidates.
+inline std::size_t appendWindowPairs(const RowStage& st, std::uint32_t wBegin, std::uint32_t wEnd, int iz,
+                                     std::uint32_t iBegin, std::uint32_t iMobileEnd, std::uint32_t iEnd, bool split,
+                                     const PairSearchInput& in, const PairSearchOutput& out, std::size_t k) {
+    const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256 c2 = _mm256_set1_ps(in.cutoff2);
+    const __m256 cellZ = _mm256_set1_ps(in.cellZ);
+    const __m256i home = _mm256_set1_epi32(iz);
+    for (std::uint32_t b = wBegin; b < wEnd; b += 8) {
+        const __m256i validI = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(wEnd - b)), lanes);
+        const __m256 valid = _mm256_castsi256_ps(validI);
+        const __m256 validMobile =
+            split ? _mm256_and_ps(valid, _mm256_loadu_ps(reinterpret_cast<const float*>(st.mobile.data() + b))) : valid;
+        // The level's offset along z: -1, 0 or +1 cell sizes, exactly.
+        const __m256i up = _mm256_sub_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(st.level.data() + b)), home);
+        const __m256 X = _mm256_loadu_ps(st.x.data() + b), Y = _mm256_loadu_ps(st.y.data() + b);
+        const __m256 Z = _mm256_add_ps(_mm256_loadu_ps(st.z.data() + b), _mm256_mul_ps(_mm256_cvtepi32_ps(up), cellZ));
+        const __m256i js = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(st.j.data() + b));
+        for (std::uint32_t i = iBegin; i < iEnd; ++i) {
+            const __m256 keep = i < iMobileEnd ? valid : validMobile;
+            const __m256 dx = _mm256_sub_ps(_mm256_set1_ps(in.x[i]), X);
+            const __m256 dy = _mm256_sub_ps(_mm256_set1_ps(in.y[i]), Y);
+            const __m256 dz = _mm256_sub_ps(_mm256_set1_ps(in.z[i]), Z);
+            const __m256 r2 = _mm256_fmadd_ps(dz, dz, _mm256_fmadd_ps(dy, dy, _mm256_mul_ps(dx, dx)));
+            const int mask = _mm256_movemask_ps(_mm256_and_ps(_mm256_cmp_ps(r2, c2, _CMP_LT_OQ), keep));
+            const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kCompress.lanes[mask]));
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.j + k), _mm256_permutevar8x32_epi32(js, perm));
+            _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.i + k), _mm256_set1_epi32(static_cast<int>(i)));
+            _mm256_storeu_ps(out.dx + k, _mm256_permutevar8x32_ps(dx, perm));
+            _mm256_storeu_ps(out.dy + k, _mm256_permutevar8x32_ps(dy, perm));
+            _mm256_storeu_ps(out.dz + k, _mm256_permutevar8x32_ps(dz, perm));
+            k += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
+        }
+    }
+    return k;
+}
 #else
 inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput& in, const PairSearchOutput& out,
                                   std::size_t k) {
@@ -118,6 +223,38 @@ inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput
                 const float dz = in.z[i] - (in.z[j] + offZ);
                 if (!(squaredDistance(dx, dy, dz) < in.cutoff2)) continue;
                 out.i[k] = i; out.j[k] = j; out.dx[k] = dx; out.dy[k] = dy; out.dz[k] = dz;
+                ++k;
+            }
+    }
+    return k;
+}
+inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, std::uint32_t jEnd, std::uint32_t mobileEnd,
+                               float offX, float offY, int level, bool split, const StageOutput& st, std::uint32_t s) {
+    for (std::uint32_t j = jBegin; j < jEnd; ++j, ++s) {
+        st.x[s] = in.x[j] + offX;
+        st.y[s] = in.y[j] + offY;
+        st.z[s] = in.z[j];
+        st.j[s] = j;
+        st.level[s] = level;
+        if (split) st.mobile[s] = j < mobileEnd ? -1 : 0;
+    }
+    return s;
+}
+
+inline std::size_t appendWindowPairs(const RowStage& st, std::uint32_t wBegin, std::uint32_t wEnd, int iz,
+                                     std::uint32_t iBegin, std::uint32_t iMobileEnd, std::uint32_t iEnd, bool split,
+                                     const PairSearchInput& in, const PairSearchOutput& out, std::size_t k) {
+    for (std::uint32_t block = wBegin; block < wEnd; block += 8) {
+        const std::uint32_t blockEnd = std::min<std::uint32_t>(block + 8, wEnd);
+        for (std::uint32_t i = iBegin; i < iEnd; ++i)
+            for (std::uint32_t m = block; m < blockEnd; ++m) {
+                if (split && i >= iMobileEnd && !st.mobile[m]) continue;
+                const float z = st.z[m] + static_cast<float>(st.level[m] - iz) * in.cellZ;
+                const float dx = in.x[i] - st.x[m];
+                const float dy = in.y[i] - st.y[m];
+                const float dz = in.z[i] - z;
+                if (!(squaredDistance(dx, dy, dz) < in.cutoff2)) continue;
+                out.i[k] = i; out.j[k] = st.j[m]; out.dx[k] = dx; out.dy[k] = dy; out.dz[k] = dz;
                 ++k;
             }
     }
