@@ -299,13 +299,16 @@ void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evalua
     const PairLoopPlan plan = makePairLoopPlan(ctx.table, ctx.cells);
     PairInputs& in = sharedPairInputs();
     constexpr bool kVelocity = EvaluatorUsesVelocity<Evaluator>::value;
+    constexpr bool kRandom = EvaluatorUsesRandom<Evaluator>::value;
     const bool predict = ctx.predictor.shift != 0.0;
-    // The predicted velocities (and the forces cleared) before the fill, which then leaves them.
-    if (predict && kVelocity) fillPredictedVelocities(p, ctx.predictor.shift, ctx.predictor.frozenOfSpecies, in);
+    // The predicted velocities and the ids (and the forces cleared) in one pass before the fill,
+    // which then leaves them.
+    const bool predictedFill = predict && kVelocity;
+    if (predictedFill) fillPredictedVelocities(p, ctx.predictor.shift, ctx.predictor.frozenOfSpecies, kRandom, in);
     else if (predict) p.clearForces();
     const auto rows = [&](auto common) {
-        detail::forEachPairRowInColours(p, ctx.cells, plan, kVelocity && !predict,
-                                        EvaluatorUsesRandom<Evaluator>::value, cutoff, [&](detail::PairBatch& batch) {
+        detail::forEachPairRowInColours(p, ctx.cells, plan, kVelocity && !predict, kRandom && !predictedFill, cutoff,
+                                        [&](detail::PairBatch& batch) {
                                             detail::evaluateBatch<decltype(common)::value>(p, in, ctx, plan, eval, batch);
                                             detail::scatterBatch(p, batch);
                                         });

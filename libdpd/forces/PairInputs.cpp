@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 namespace dpd {
 
@@ -56,7 +57,7 @@ void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, 
     }
 }
 
-void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies,
+void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies, bool ids,
                              PairInputs& in) {
     const std::size_t n = p.size();
     fitTo(in.kinematics, n);
@@ -66,32 +67,35 @@ void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::
     const double* __restrict vx = p.vx.data();
     const double* __restrict vy = p.vy.data();
     const double* __restrict vz = p.vz.data();
+    const std::uint64_t* __restrict id = p.id.data();
     PairKinematics* __restrict kin = in.kinematics.data();
-    const bool anyFrozen = frozenOfSpecies &&
-                           std::any_of(frozenOfSpecies->begin(), frozenOfSpecies->end(), [](std::uint8_t f) { return f != 0; });
-    if (!anyFrozen) {
-#pragma omp parallel for schedule(static)
-        for (std::size_t k = 0; k < n; ++k) {
-            kin[k].vx = static_cast<float>(vx[k] + shift * fx[k]);
-            kin[k].vy = static_cast<float>(vy[k] + shift * fy[k]);
-            kin[k].vz = static_cast<float>(vz[k] + shift * fz[k]);
-            fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
-        }
-        return;
-    }
     // Per species: v + 0 f is v exactly (forces are finite), so a frozen particle's velocity passes as it is.
     std::array<double, 256> shiftOf;
     shiftOf.fill(shift);
-    for (std::size_t s = 0; s < frozenOfSpecies->size(); ++s)
-        if ((*frozenOfSpecies)[s]) shiftOf[s] = 0.0;
+    if (frozenOfSpecies)
+        for (std::size_t s = 0; s < frozenOfSpecies->size(); ++s)
+            if ((*frozenOfSpecies)[s]) shiftOf[s] = 0.0;
+    const bool anyFrozen = std::any_of(shiftOf.begin(), shiftOf.end(), [](double c) { return c == 0.0; });
     const std::uint8_t* __restrict species = p.species.data();
+    const auto fill = [&](auto perSpecies, auto withIds) {
 #pragma omp parallel for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
-        const double c = shiftOf[species[k]];
-        kin[k].vx = static_cast<float>(vx[k] + c * fx[k]);
-        kin[k].vy = static_cast<float>(vy[k] + c * fy[k]);
-        kin[k].vz = static_cast<float>(vz[k] + c * fz[k]);
-        fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double c = decltype(perSpecies)::value ? shiftOf[species[k]] : shift;
+            PairKinematics e;
+            e.vx = static_cast<float>(vx[k] + c * fx[k]);
+            e.vy = static_cast<float>(vy[k] + c * fy[k]);
+            e.vz = static_cast<float>(vz[k] + c * fz[k]);
+            e.id = decltype(withIds)::value ? static_cast<std::uint32_t>(id[k]) : kin[k].id;
+            kin[k] = e;
+            fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
+        }
+    };
+    if (anyFrozen) {
+        if (ids) fill(std::true_type{}, std::true_type{});
+        else fill(std::true_type{}, std::false_type{});
+    } else {
+        if (ids) fill(std::false_type{}, std::true_type{});
+        else fill(std::false_type{}, std::false_type{});
     }
 }
 
