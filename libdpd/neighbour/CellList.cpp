@@ -31,12 +31,6 @@ void CellList::setup(const Box& box, double cutoff) {
     start_.assign(2 * static_cast<std::size_t>(numCells()) + 1, 0);
 }
 
-int CellList::axisCell(double x, int axis) const {
-    const int c = static_cast<int>((x - box_.lo[axis]) * invSize_[axis]);
-    // Positions are wrapped into [lo, hi); rounding can still give n at the very top.
-    return std::min(std::max(c, 0), n_[axis] - 1);
-}
-
 void CellList::sortParticles(Particles& p) {
     frozenOfSpecies_.clear();
     sort(p);

@@ -12,6 +12,7 @@
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -44,13 +45,18 @@ public:
     bool isFrozenSpecies(int s) const {
         return s < static_cast<int>(frozenOfSpecies_.size()) && frozenOfSpecies_[s] != 0;
     }
+    // The cell index along `axis` of a coordinate inside the box (as the sort computes it).
+    int axisCell(double x, int axis) const {
+        const int c = static_cast<int>((x - box_.lo[axis]) * invSize_[axis]);
+        // Positions are wrapped into [lo, hi); rounding can still give n at the very top.
+        return std::min(std::max(c, 0), n_[axis] - 1);
+    }
     const Box& box() const { return box_; }
     const Eigen::Vector3d& cellSize() const { return size_; }
     // Bytes held (capacities of the cell starts, the sort keys and order, and the sort's scratch).
     std::size_t memoryBytes() const;
 
 private:
-    int axisCell(double x, int axis) const;
     void sort(Particles& p);
     // start_ and order_ from keyOf_ (a stable counting sort, in parallel).
     void countingSort();
