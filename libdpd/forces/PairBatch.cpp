@@ -1,5 +1,6 @@
 #include "forces/PairBatch.hpp"
 
+#include "forces/PairForceSums.hpp"
 #include "forces/PairInputs.hpp"
 #include "forces/PairForceLoop.hpp"
 
@@ -55,6 +56,8 @@ PairBatch& threadPairBatch() {
 
 }  // namespace detail
 
-std::size_t pairLoopScratchBytes() { return detail::totalBatchBytes.load() + sharedPairInputs().capacityBytes(); }
+std::size_t pairLoopScratchBytes() {
+    return detail::totalBatchBytes.load() + sharedPairInputs().capacityBytes() + sharedPairForceSums().capacityBytes();
+}
 
 }  // namespace dpd

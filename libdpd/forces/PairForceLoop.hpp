@@ -83,7 +83,7 @@ struct EvaluatorUsesVelocity<E, std::void_t<decltype(E::kUsesVelocity)>> : std::
 template <class Evaluator>
 void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evaluator& eval, double cutoff);
 
-// Bytes held by the pair loop's per-thread pair buffers (all threads together).
+// Bytes held by the pair loop: its per-thread pair buffers (all threads together), its inputs and its force sums.
 std::size_t pairLoopScratchBytes();
 
 }  // namespace dpd

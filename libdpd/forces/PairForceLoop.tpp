@@ -1,5 +1,6 @@
 // Implementation of accumulatePairForces (included by PairForceLoop.hpp).
 #include "forces/PairBatch.hpp"
+#include "forces/PairForceSums.hpp"
 #include "forces/PairGather.hpp"
 #include "forces/PairLoopPlan.hpp"
 #include "forces/PairSearch.hpp"
@@ -217,23 +218,43 @@ inline void evaluateBatch(const Particles& p, const PairInputs& in, const PairLo
     }
 }
 
-// Pass 3: the forces added to both particles of every pair, in the order the pairs were found.
-inline void scatterBatch(Particles& p, const PairBatch& batch) {
+// Pass 3: the forces added to the sums of both particles of every pair (PairForceSums.hpp), in the
+// order the pairs were found: four pairs' forces made at a time and turned into one (x, y, z, 0)
+// vector each; the last pairs of a batch one by one.
+inline void scatterBatch(ForceSum* sums, const PairBatch& batch) {
     const std::size_t n = batch.size;
-    double* __restrict fx = p.fx.data();
-    double* __restrict fy = p.fy.data();
-    double* __restrict fz = p.fz.data();
     const std::uint32_t* __restrict bi = batch.i;
     const std::uint32_t* __restrict bj = batch.j;
     const float* __restrict bdx = batch.dx;
     const float* __restrict bdy = batch.dy;
     const float* __restrict bdz = batch.dz;
     const double* __restrict s = batch.forceOverR;
-    for (std::size_t k = 0; k < n; ++k) {
+    std::size_t k = 0;
+#if defined(__AVX2__)
+    const __m256d zero = _mm256_setzero_pd();
+    for (; k + 4 <= n; k += 4) {
+        const __m256d sk = _mm256_loadu_pd(s + k);
+        const __m256d gx = _mm256_mul_pd(sk, _mm256_cvtps_pd(_mm_loadu_ps(bdx + k)));
+        const __m256d gy = _mm256_mul_pd(sk, _mm256_cvtps_pd(_mm_loadu_ps(bdy + k)));
+        const __m256d gz = _mm256_mul_pd(sk, _mm256_cvtps_pd(_mm_loadu_ps(bdz + k)));
+        const __m256d xy02 = _mm256_unpacklo_pd(gx, gy), xy13 = _mm256_unpackhi_pd(gx, gy);
+        const __m256d z02 = _mm256_unpacklo_pd(gz, zero), z13 = _mm256_unpackhi_pd(gz, zero);
+        const __m256d g[4] = {_mm256_permute2f128_pd(xy02, z02, 0x20), _mm256_permute2f128_pd(xy13, z13, 0x20),
+                              _mm256_permute2f128_pd(xy02, z02, 0x31), _mm256_permute2f128_pd(xy13, z13, 0x31)};
+        for (int m = 0; m < 4; ++m) {
+            double* a = &sums[bi[k + m]].x;
+            double* b = &sums[bj[k + m]].x;
+            _mm256_store_pd(a, _mm256_add_pd(_mm256_load_pd(a), g[m]));
+            _mm256_store_pd(b, _mm256_sub_pd(_mm256_load_pd(b), g[m]));
+        }
+    }
+#endif
+    for (; k < n; ++k) {
         const double gx = s[k] * bdx[k], gy = s[k] * bdy[k], gz = s[k] * bdz[k];
-        const std::uint32_t i = bi[k], j = bj[k];
-        fx[i] += gx; fy[i] += gy; fz[i] += gz;
-        fx[j] -= gx; fy[j] -= gy; fz[j] -= gz;
+        ForceSum& a = sums[bi[k]];
+        ForceSum& b = sums[bj[k]];
+        a.x += gx; a.y += gy; a.z += gz;
+        b.x -= gx; b.y -= gy; b.z -= gz;
     }
 }
 
@@ -301,16 +322,16 @@ void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evalua
     constexpr bool kVelocity = EvaluatorUsesVelocity<Evaluator>::value;
     constexpr bool kRandom = EvaluatorUsesRandom<Evaluator>::value;
     const bool predict = ctx.predictor.shift != 0.0;
-    // The predicted velocities and the ids (and the forces cleared) in one pass before the fill,
-    // which then leaves them.
+    // The predicted velocities and the ids in one pass before the fill, which then leaves them.
     const bool predictedFill = predict && kVelocity;
     if (predictedFill) fillPredictedVelocities(p, ctx.predictor.shift, ctx.predictor.frozenOfSpecies, kRandom, in);
-    else if (predict) p.clearForces();
+    PairForceSums& sums = sharedPairForceSums();
+    ForceSum* sum = sums.prepare(p.size());
     const auto rows = [&](auto common) {
         detail::forEachPairRowInColours(p, ctx.cells, plan, kVelocity && !predict, kRandom && !predictedFill, cutoff,
                                         [&](detail::PairBatch& batch) {
                                             detail::evaluateBatch<decltype(common)::value>(p, in, ctx, plan, eval, batch);
-                                            detail::scatterBatch(p, batch);
+                                            detail::scatterBatch(sum, batch);
                                         });
     };
     // The switches pick the loop once per call: a species check per pair only where some pair the
@@ -318,6 +339,8 @@ void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evalua
     // they differ.
     if (plan.commonCoefficients) rows(std::true_type{});
     else rows(std::false_type{});
+    // With a predictor the pair forces replace p.f (which the predicted velocities were made from).
+    sums.handTo(p, predict);
 }
 
 }  // namespace dpd

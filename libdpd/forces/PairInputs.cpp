@@ -56,13 +56,13 @@ void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, 
     }
 }
 
-void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies, bool ids,
+void fillPredictedVelocities(const Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies, bool ids,
                              PairInputs& in) {
     const std::size_t n = p.size();
     fitTo(in.kinematics, n);
-    double* __restrict fx = p.fx.data();
-    double* __restrict fy = p.fy.data();
-    double* __restrict fz = p.fz.data();
+    const double* __restrict fx = p.fx.data();
+    const double* __restrict fy = p.fy.data();
+    const double* __restrict fz = p.fz.data();
     const double* __restrict vx = p.vx.data();
     const double* __restrict vy = p.vy.data();
     const double* __restrict vz = p.vz.data();
@@ -86,7 +86,6 @@ void fillPredictedVelocities(Particles& p, double shift, const std::vector<std::
             e.vz = static_cast<float>(vz[k] + c * fz[k]);
             e.id = decltype(withIds)::value ? static_cast<std::uint32_t>(id[k]) : kin[k].id;
             kin[k] = e;
-            fx[k] = 0.0; fy[k] = 0.0; fz[k] = 0.0;
         }
     };
     if (anyFrozen) {
