@@ -100,7 +100,7 @@ inline void stageRow(const CellList& cl, const PairInputs& in, const PairLoopPla
         for (int k = 1; k < nColumns; ++k) {
             const int cell = columns[k].base + c;
             s = stageCell(search, cl.cellStart(cell), cl.cellStart(cell + 1), split ? cl.mobileEnd(cell) : cl.cellStart(cell + 1),
-                          columns[k].offX, columns[k].offY, c, split, out, s);
+                          columns[k].offX, columns[k].offY, split, out, s);
         }
     }
     stage.levelStart[nz] = s;
@@ -163,7 +163,7 @@ inline void findCellPairs(const Particles& p, const PairInputs& in, const CellLi
     for (int r = 0; r < nRuns; ++r) k = appendRunPairs(runs[r], search, out, k);
     if (window) {
         const std::uint32_t aMobileEnd = plan.skipFrozenPairs ? cl.mobileEnd(home) : aEnd;
-        k = appendWindowPairs(stage, wBegin, wEnd, iz, aBegin, aMobileEnd, aEnd, plan.skipFrozenPairs, search, out, k);
+        k = appendWindowPairs(stage, iz, aBegin, aMobileEnd, aEnd, plan.skipFrozenPairs, search, out, k);
     }
     if constexpr (kFilter) k = dropNonInteracting(p, plan, batch, first, k);
     batch.size = k;

@@ -59,12 +59,12 @@ struct PairSearchOutput {
 
 // The neighbour columns of one row of home cells (all but the home column), staged level by level:
 // for each z index c, the particles of cell c of each column in turn, at their cell-local position
-// plus the column's x and y offsets (z stays cell-local; `level` is c), with their indices, and,
-// where frozen particles are kept apart, whether each is mobile. Each thread keeps its own.
+// plus the column's x and y offsets (z stays cell-local: where the levels start says how far up),
+// with their indices and, where frozen particles are kept apart, whether each is mobile. Each thread
+// keeps its own.
 struct RowStage {
     std::vector<float> x, y, z;
     std::vector<std::uint32_t> j;
-    std::vector<std::int32_t> level;
     std::vector<std::int32_t> mobile;        // all bits set for a mobile candidate (filled when split)
     std::vector<std::uint32_t> levelStart;   // level c is entries [levelStart[c], levelStart[c + 1])
 
@@ -73,7 +73,7 @@ struct RowStage {
         levelStart.resize(static_cast<std::size_t>(levels) + 1);
         if (count + 8 <= j.size()) return;
         const std::size_t n = std::max(count + 8, 2 * j.size());
-        x.resize(n); y.resize(n); z.resize(n); j.resize(n); level.resize(n); mobile.resize(n);
+        x.resize(n); y.resize(n); z.resize(n); j.resize(n); mobile.resize(n);
     }
 };
 
@@ -82,9 +82,9 @@ struct RowStage {
 struct StageOutput {
     float *x, *y, *z;
     std::uint32_t* j;
-    std::int32_t *level, *mobile;
+    std::int32_t* mobile;
     explicit StageOutput(RowStage& st)
-        : x(st.x.data()), y(st.y.data()), z(st.z.data()), j(st.j.data()), level(st.level.data()), mobile(st.mobile.data()) {}
+        : x(st.x.data()), y(st.y.data()), z(st.z.data()), j(st.j.data()), mobile(st.mobile.data()) {}
 };
 
 inline RowStage& threadRowStage() {
@@ -148,10 +148,10 @@ inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput
     }
     return k;
 }
-// Appends particles [jBegin, jEnd) of one cell at `level` to the stage from entry s on (those before
+// Appends particles [jBegin, jEnd) of one cell to the stage from entry s on (those before
 // mobileEnd mobile); returns the new end.
 inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, std::uint32_t jEnd, std::uint32_t mobileEnd,
-                               float offX, float offY, int level, bool split, const StageOutput& st, std::uint32_t s) {
+                               float offX, float offY, bool split, const StageOutput& st, std::uint32_t s) {
     const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     for (std::uint32_t j = jBegin; j < jEnd; j += 8) {
         const __m256i valid = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(jEnd - j)), lanes);
@@ -161,7 +161,6 @@ inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, 
         _mm256_storeu_ps(st.y + s, _mm256_add_ps(_mm256_maskload_ps(in.y + j, valid), _mm256_set1_ps(offY)));
         _mm256_storeu_ps(st.z + s, _mm256_maskload_ps(in.z + j, valid));
         _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.j + s), js);
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.level + s), _mm256_set1_epi32(level));
         if (split)
             _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.mobile + s),
                                 _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(mobileEnd)), js));
@@ -170,23 +169,28 @@ inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, 
     return s;
 }
 
-// The pairs of home particles [iBegin, iEnd) of the cell at level iz with the staged candidates
-// [wBegin, wEnd) (levels iz - 1 to iz + 1); home particles from iMobileEnd on are frozen and meet
+// The pairs of home particles [iBegin, iEnd) of the cell at level iz (0 < iz < levels - 1) with the
+// staged candidates of levels iz - 1 to iz + 1; home particles from iMobileEnd on are frozen and meet
 // only the mobile candidates.
-inline std::size_t appendWindowPairs(const RowStage& st, std::uint32_t wBegin, std::uint32_t wEnd, int iz,
-                                     std::uint32_t iBegin, std::uint32_t iMobileEnd, std::uint32_t iEnd, bool split,
-                                     const PairSearchInput& in, const PairSearchOutput& out, std::size_t k) {
+inline std::size_t appendWindowPairs(const RowStage& st, int iz, std::uint32_t iBegin, std::uint32_t iMobileEnd,
+                                     std::uint32_t iEnd, bool split, const PairSearchInput& in,
+                                     const PairSearchOutput& out, std::size_t k) {
     const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     const __m256 c2 = _mm256_set1_ps(in.cutoff2);
     const __m256 cellZ = _mm256_set1_ps(in.cellZ);
-    const __m256i home = _mm256_set1_epi32(iz);
+    const std::uint32_t wBegin = st.levelStart[iz - 1], wEnd = st.levelStart[iz + 2];
+    // Entries from levelStart[iz] on are one level up, and from levelStart[iz + 1] on one more.
+    const __m256i home = _mm256_set1_epi32(static_cast<int>(st.levelStart[iz]) - 1);
+    const __m256i above = _mm256_set1_epi32(static_cast<int>(st.levelStart[iz + 1]) - 1);
     for (std::uint32_t b = wBegin; b < wEnd; b += 8) {
         const __m256i validI = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(wEnd - b)), lanes);
         const __m256 valid = _mm256_castsi256_ps(validI);
         const __m256 validMobile =
             split ? _mm256_and_ps(valid, _mm256_loadu_ps(reinterpret_cast<const float*>(st.mobile.data() + b))) : valid;
-        // The level's offset along z: -1, 0 or +1 cell sizes, exactly.
-        const __m256i up = _mm256_sub_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(st.level.data() + b)), home);
+        // The level's offset along z: -1, 0 or +1 cell sizes, exactly (the comparisons give -1 per level passed).
+        const __m256i entries = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(b)), lanes);
+        const __m256i up = _mm256_sub_epi32(_mm256_set1_epi32(-1), _mm256_add_epi32(_mm256_cmpgt_epi32(entries, home),
+                                                                                     _mm256_cmpgt_epi32(entries, above)));
         const __m256 X = _mm256_loadu_ps(st.x.data() + b), Y = _mm256_loadu_ps(st.y.data() + b);
         const __m256 Z = _mm256_add_ps(_mm256_loadu_ps(st.z.data() + b), _mm256_mul_ps(_mm256_cvtepi32_ps(up), cellZ));
         const __m256i js = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(st.j.data() + b));
@@ -229,27 +233,28 @@ inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput
     return k;
 }
 inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, std::uint32_t jEnd, std::uint32_t mobileEnd,
-                               float offX, float offY, int level, bool split, const StageOutput& st, std::uint32_t s) {
+                               float offX, float offY, bool split, const StageOutput& st, std::uint32_t s) {
     for (std::uint32_t j = jBegin; j < jEnd; ++j, ++s) {
         st.x[s] = in.x[j] + offX;
         st.y[s] = in.y[j] + offY;
         st.z[s] = in.z[j];
         st.j[s] = j;
-        st.level[s] = level;
         if (split) st.mobile[s] = j < mobileEnd ? -1 : 0;
     }
     return s;
 }
 
-inline std::size_t appendWindowPairs(const RowStage& st, std::uint32_t wBegin, std::uint32_t wEnd, int iz,
-                                     std::uint32_t iBegin, std::uint32_t iMobileEnd, std::uint32_t iEnd, bool split,
-                                     const PairSearchInput& in, const PairSearchOutput& out, std::size_t k) {
+inline std::size_t appendWindowPairs(const RowStage& st, int iz, std::uint32_t iBegin, std::uint32_t iMobileEnd,
+                                     std::uint32_t iEnd, bool split, const PairSearchInput& in,
+                                     const PairSearchOutput& out, std::size_t k) {
+    const std::uint32_t wBegin = st.levelStart[iz - 1], wEnd = st.levelStart[iz + 2];
     for (std::uint32_t block = wBegin; block < wEnd; block += 8) {
         const std::uint32_t blockEnd = std::min<std::uint32_t>(block + 8, wEnd);
         for (std::uint32_t i = iBegin; i < iEnd; ++i)
             for (std::uint32_t m = block; m < blockEnd; ++m) {
                 if (split && i >= iMobileEnd && !st.mobile[m]) continue;
-                const float z = st.z[m] + static_cast<float>(st.level[m] - iz) * in.cellZ;
+                const int up = (m >= st.levelStart[iz] ? 1 : 0) + (m >= st.levelStart[iz + 1] ? 1 : 0) - 1;
+                const float z = st.z[m] + static_cast<float>(up) * in.cellZ;
                 const float dx = in.x[i] - st.x[m];
                 const float dy = in.y[i] - st.y[m];
                 const float dz = in.z[i] - z;
