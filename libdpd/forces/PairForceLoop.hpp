@@ -10,9 +10,11 @@
 //
 // Inside a slab the work goes by rows of cells (ix, iy fixed) in three passes (PairForceLoop.tpp):
 // find the pairs within the cutoff (in single precision on cell-local positions, PairInputs.hpp;
-// the candidates of each home cell are the half stencil's columns along z, PairSearch.hpp), evaluate
-// the force of each in a loop the compiler vectorises (random numbers included; the force itself in
-// double precision), then add the forces to the particles in the order the pairs were found.
+// the candidates of each home cell are the half stencil's columns along z, the four beside the home
+// column staged once per row, PairSearch.hpp), evaluate the force of each in a loop the compiler
+// vectorises (random numbers included; the force itself in double precision), then add the forces
+// to per-particle sums in the order the pairs were found (PairForceSums.hpp), which go to the
+// particles at the end.
 // Frozen-frozen pairs are not even visited when the cell list keeps frozen particles apart.
 #include "core/Particles.hpp"
 #include "core/Species.hpp"
