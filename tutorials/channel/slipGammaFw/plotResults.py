@@ -79,7 +79,16 @@ def main():
     z_low, z_high = walls("constant/dpdProperties")
 
     strict = "-test" not in sys.argv[1:]
-    checks = monotonic_checks("2-D", g2, b2, e2, strict) + monotonic_checks("3-D", g3, b3, e3, strict)
+    checks = monotonic_checks("2-D", g2, b2, e2, strict)
+    # The short 3-D runs of the test are reported, not checked: their fitted errors (bins taken as
+    # independent) come out about five times too small. Six seeds of each test run (250 time units,
+    # d = 10, 2026-11-21) scattered by 0.07 in the slip length and 0.010 in nu, against +-0.013 and
+    # +-0.002 quoted per run, and the rise from gamma_fw 13.5 to 1 (0.10 on average, in the old and
+    # the new pair loop alike) fell short of three quoted errors in 2 of the 6 seeds. A decisive
+    # 3-D test would need ~2000 sampled time units per run.
+    untested = [] if strict else monotonic_checks("3-D", g3, b3, e3, False)[-1:]
+    if strict:
+        checks += monotonic_checks("3-D", g3, b3, e3, strict)
     # The variants leave a gap at the wall: more fluid missing next to it than at the standard wall
     # (same gamma_fw, 4.5). A bin's density is known to ~1 %, so the depletion to ~0.005: a
     # difference of 0.1 (a tenth of a cutoff of fluid) is decisive.
@@ -104,6 +113,8 @@ def main():
         f.write(f"2-D standard wall (gamma_fw 4.5): depletion at the wall {gap_std:.3f}\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
+        for name, _, value in untested:
+            f.write(f"info   (not checked in the test: its errors run small) {name}: {value}\n")
     print(open("results.dat").read(), end="")
 
     fig, ax = plt.subplots(2, 2, figsize=(12, 8.5))

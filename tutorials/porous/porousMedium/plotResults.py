@@ -21,7 +21,9 @@ Checks, full scene (the issue's criteria):
     (Darcy permeability) ratio.
 Test mode (48 x 48, 60 time units of sampling): the same checks with each 10 % bound widened by three
 times the noise of the quantity (noiseL2 of the line, the standard error of the superficial velocity),
-and the kT bound by three times the standard error of the series' mean.
+and the kT bound by three times the standard error of the series' mean. Next to the grains the bound
+is the larger of 10 % of the peak and simpleFoam's own velocity there plus 3 % of the peak (in the
+small mask the continuum itself has ~11 % there), widened by three standard errors.
 
 Where the two disagree: each fluid bin gets the local pore size (the diameter of the largest disc in
 the fluid that covers it, from the mask) and its distance to the solid; results.dat gives the relative
@@ -213,15 +215,24 @@ def main():
     line_tol = 0.10 + (3 * crack["noiseL2"] if test_mode else 0.0)
     mean_tol = 0.10 + (3 * super_err if test_mode else 0.0)
     kT_tol = 0.035 + (3 * kT_log_err if test_mode else 0.0)
+    # Next to the grains: 10 % of the crack's peak. In the test's small mask the bins the grains cut
+    # hold more of the flow: simpleFoam's own velocity there is ~11 % of the peak (0.0195 of 0.182),
+    # so a correct no-slip run sits at the bound. There the bound is the continuum's value plus the
+    # 3 %-of-peak allowance of the next check, widened by three standard errors like every test bound;
+    # a slipping wall (velocity of the order of the pore's) is still far above it.
+    wall_se = np.sqrt(np.mean(grid["uxErr"][near] ** 2) / near.sum())
+    wall_bound = 0.1 * u_peak
+    if test_mode:
+        wall_bound = max(wall_bound, abs(u_wall_fvm) + 0.03 * u_peak) + 3 * wall_se
     checks = [
         (f"mean kT of the bins within {kT_tol:.3f} of 1", abs(kT_bins - 1) < kT_tol, f"{kT_bins:.4f}"),
         (f"mean kT of the log's series (less the flow's part) within {kT_tol:.3f} of 1",
          abs(kT_log_corrected - 1) < kT_tol, f"{kT_log:.4f} - {flow_kT:.4f} = {kT_log_corrected:.4f} +- {kT_log_err:.4f}"),
         ("no fluid particle inside the solid at the end", inside == 0, f"{inside}"),
-        ("velocity next to the grains < 10 % of the crack's peak", abs(u_wall_dpd) < 0.1 * u_peak,
+        (f"velocity next to the grains < {wall_bound / u_peak:.1%} of the crack's peak", abs(u_wall_dpd) < wall_bound,
          f"{u_wall_dpd:.4f} (peak {u_peak:.4f})"),
         ("velocity next to the grains within 3 % of the peak of simpleFoam's there",
-         abs(u_wall_dpd - u_wall_fvm) < 0.03 * u_peak + (3 * np.sqrt(np.mean(grid['uxErr'][near] ** 2) / near.sum()) if test_mode else 0),
+         abs(u_wall_dpd - u_wall_fvm) < 0.03 * u_peak + (3 * wall_se if test_mode else 0),
          f"DPD {u_wall_dpd:.4f}, simpleFoam {u_wall_fvm:.4f} over {near.sum()} bins"),
         (f"crack centre line: relative L2 < {line_tol:.3f}", crack["L2"] < line_tol,
          f"{crack['L2']:.4f} (noise {crack['noiseL2']:.4f}, {int(crack['points'])} bins)"),
