@@ -109,10 +109,29 @@ struct CompressTable {
 };
 inline constexpr CompressTable kCompress{};
 
+// Block of candidates (X, Y, Z, indices js) against home particle i: those of `keep` closer than the
+// cutoff packed to the front with the permutation their mask looks up, and appended at k together
+// (every store writes eight entries). Returns the new end. No branch on the mask: whether a block
+// holds a pair is a coin toss the predictor would lose.
+inline std::size_t appendBlockHits(std::uint32_t i, __m256 X, __m256 Y, __m256 Z, __m256i js, __m256 keep,
+                                   const PairSearchInput& in, const PairSearchOutput& out, std::size_t k) {
+    const __m256 dx = _mm256_sub_ps(_mm256_set1_ps(in.x[i]), X);
+    const __m256 dy = _mm256_sub_ps(_mm256_set1_ps(in.y[i]), Y);
+    const __m256 dz = _mm256_sub_ps(_mm256_set1_ps(in.z[i]), Z);
+    const __m256 r2 = _mm256_fmadd_ps(dz, dz, _mm256_fmadd_ps(dy, dy, _mm256_mul_ps(dx, dx)));
+    const int mask = _mm256_movemask_ps(_mm256_and_ps(_mm256_cmp_ps(r2, _mm256_set1_ps(in.cutoff2), _CMP_LT_OQ), keep));
+    const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kCompress.lanes[mask]));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.j + k), _mm256_permutevar8x32_epi32(js, perm));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.i + k), _mm256_set1_epi32(static_cast<int>(i)));
+    _mm256_storeu_ps(out.dx + k, _mm256_permutevar8x32_ps(dx, perm));
+    _mm256_storeu_ps(out.dy + k, _mm256_permutevar8x32_ps(dy, perm));
+    _mm256_storeu_ps(out.dz + k, _mm256_permutevar8x32_ps(dz, perm));
+    return k + static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
+}
+
 inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput& in, const PairSearchOutput& out,
                                   std::size_t k) {
     const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    const __m256 c2 = _mm256_set1_ps(in.cutoff2);
     const __m256 offX = _mm256_set1_ps(run.offX), offY = _mm256_set1_ps(run.offY);
     const __m256i step1 = _mm256_set1_epi32(static_cast<int>(run.zStep1) - 1);
     const __m256i step2 = _mm256_set1_epi32(static_cast<int>(run.zStep2) - 1);
@@ -130,20 +149,7 @@ inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput
         for (std::uint32_t i = run.iBegin; i < run.iEnd; ++i) {
             __m256i keep = valid;
             if (run.onlyAfterI) keep = _mm256_and_si256(keep, _mm256_cmpgt_epi32(js, _mm256_set1_epi32(static_cast<int>(i))));
-            const __m256 dx = _mm256_sub_ps(_mm256_set1_ps(in.x[i]), X);
-            const __m256 dy = _mm256_sub_ps(_mm256_set1_ps(in.y[i]), Y);
-            const __m256 dz = _mm256_sub_ps(_mm256_set1_ps(in.z[i]), Z);
-            const __m256 r2 = _mm256_fmadd_ps(dz, dz, _mm256_fmadd_ps(dy, dy, _mm256_mul_ps(dx, dx)));
-            const __m256 inside = _mm256_and_ps(_mm256_cmp_ps(r2, c2, _CMP_LT_OQ), _mm256_castsi256_ps(keep));
-            // No branch on the mask: whether a block holds a pair is a coin toss the predictor would lose.
-            const int mask = _mm256_movemask_ps(inside);
-            const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kCompress.lanes[mask]));
-            _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.j + k), _mm256_permutevar8x32_epi32(js, perm));
-            _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.i + k), _mm256_set1_epi32(static_cast<int>(i)));
-            _mm256_storeu_ps(out.dx + k, _mm256_permutevar8x32_ps(dx, perm));
-            _mm256_storeu_ps(out.dy + k, _mm256_permutevar8x32_ps(dy, perm));
-            _mm256_storeu_ps(out.dz + k, _mm256_permutevar8x32_ps(dz, perm));
-            k += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
+            k = appendBlockHits(i, X, Y, Z, js, _mm256_castsi256_ps(keep), in, out, k);
         }
     }
     return k;
@@ -176,7 +182,6 @@ inline std::size_t appendWindowPairs(const RowStage& st, int iz, std::uint32_t i
                                      std::uint32_t iEnd, bool split, const PairSearchInput& in,
                                      const PairSearchOutput& out, std::size_t k) {
     const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    const __m256 c2 = _mm256_set1_ps(in.cutoff2);
     const __m256 cellZ = _mm256_set1_ps(in.cellZ);
     const std::uint32_t wBegin = st.levelStart[iz - 1], wEnd = st.levelStart[iz + 2];
     // Entries from levelStart[iz] on are one level up, and from levelStart[iz + 1] on one more.
@@ -194,21 +199,8 @@ inline std::size_t appendWindowPairs(const RowStage& st, int iz, std::uint32_t i
         const __m256 X = _mm256_loadu_ps(st.x.data() + b), Y = _mm256_loadu_ps(st.y.data() + b);
         const __m256 Z = _mm256_add_ps(_mm256_loadu_ps(st.z.data() + b), _mm256_mul_ps(_mm256_cvtepi32_ps(up), cellZ));
         const __m256i js = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(st.j.data() + b));
-        for (std::uint32_t i = iBegin; i < iEnd; ++i) {
-            const __m256 keep = i < iMobileEnd ? valid : validMobile;
-            const __m256 dx = _mm256_sub_ps(_mm256_set1_ps(in.x[i]), X);
-            const __m256 dy = _mm256_sub_ps(_mm256_set1_ps(in.y[i]), Y);
-            const __m256 dz = _mm256_sub_ps(_mm256_set1_ps(in.z[i]), Z);
-            const __m256 r2 = _mm256_fmadd_ps(dz, dz, _mm256_fmadd_ps(dy, dy, _mm256_mul_ps(dx, dx)));
-            const int mask = _mm256_movemask_ps(_mm256_and_ps(_mm256_cmp_ps(r2, c2, _CMP_LT_OQ), keep));
-            const __m256i perm = _mm256_load_si256(reinterpret_cast<const __m256i*>(kCompress.lanes[mask]));
-            _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.j + k), _mm256_permutevar8x32_epi32(js, perm));
-            _mm256_storeu_si256(reinterpret_cast<__m256i*>(out.i + k), _mm256_set1_epi32(static_cast<int>(i)));
-            _mm256_storeu_ps(out.dx + k, _mm256_permutevar8x32_ps(dx, perm));
-            _mm256_storeu_ps(out.dy + k, _mm256_permutevar8x32_ps(dy, perm));
-            _mm256_storeu_ps(out.dz + k, _mm256_permutevar8x32_ps(dz, perm));
-            k += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
-        }
+        for (std::uint32_t i = iBegin; i < iEnd; ++i)
+            k = appendBlockHits(i, X, Y, Z, js, i < iMobileEnd ? valid : validMobile, in, out, k);
     }
     return k;
 }
