@@ -153,8 +153,7 @@ inline void findCellPairs(const Particles& p, const PairInputs& in, const CellLi
     std::size_t candidates = 0;
     for (int r = 0; r < nRuns; ++r)
         candidates += std::size_t(runs[r].jEnd - runs[r].jBegin) * (runs[r].iEnd - runs[r].iBegin);
-    const std::uint32_t wBegin = stage.levelStart[iz - (window ? 1 : 0)], wEnd = window ? stage.levelStart[iz + 2] : wBegin;
-    candidates += std::size_t(wEnd - wBegin) * (aEnd - aBegin);
+    if (window) candidates += std::size_t(stage.levelStart[iz + 2] - stage.levelStart[iz - 1]) * (aEnd - aBegin);
     batch.reserveMore(candidates + 8);
     const PairSearchInput search{in.x.data(), in.y.data(), in.z.data(), in.cellZ, cutoff2};
     const PairSearchOutput out{batch.i, batch.j, batch.dx, batch.dy, batch.dz};

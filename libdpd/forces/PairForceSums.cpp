@@ -1,11 +1,11 @@
 #include "forces/PairForceSums.hpp"
 
+#include "forces/FitTo.hpp"
+
 namespace dpd {
 
 ForceSum* PairForceSums::prepare(std::size_t n) {
-    // No more than twice what is needed held (the benchmark runs 10^6 particles, then 32,000).
-    if (sums_.capacity() > 2 * n) std::vector<ForceSum>().swap(sums_);
-    sums_.resize(n);  // new entries are zero, and the old ones were left zero
+    fitTo(sums_, n);  // new entries are zero, and the old ones were left zero
     return sums_.data();
 }
 

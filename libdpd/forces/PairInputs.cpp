@@ -1,5 +1,7 @@
 #include "forces/PairInputs.hpp"
 
+#include "forces/FitTo.hpp"
+
 #include <algorithm>
 #include <array>
 #include <type_traits>
@@ -9,16 +11,6 @@ namespace dpd {
 std::size_t PairInputs::capacityBytes() const {
     return sizeof(float) * (x.capacity() + y.capacity() + z.capacity()) + sizeof(PairKinematics) * kinematics.capacity();
 }
-
-namespace {
-// n entries, and no more than twice that held: the inputs are shared by every system of the process
-// (the benchmark runs a million particles, then 32,000), and each should hold what it needs.
-template <class T>
-void fitTo(std::vector<T>& v, std::size_t n) {
-    if (v.capacity() > 2 * n) std::vector<T>().swap(v);
-    v.resize(n);
-}
-}  // namespace
 
 void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, bool ids, PairInputs& in) {
     const std::size_t n = p.size();

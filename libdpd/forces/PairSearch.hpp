@@ -154,6 +154,7 @@ inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput
     }
     return k;
 }
+
 // Appends particles [jBegin, jEnd) of one cell to the stage from entry s on (those before
 // mobileEnd mobile); returns the new end.
 inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, std::uint32_t jEnd, std::uint32_t mobileEnd,

@@ -1,0 +1,17 @@
+#pragma once
+// Sizing of the pair loop's process-wide buffers (its inputs, its force sums): they are shared by
+// every system of the process (the benchmark runs a million particles, then 32,000), and each should
+// hold what it needs, not what the largest before it needed.
+#include <cstddef>
+#include <vector>
+
+namespace dpd {
+
+// n entries, and no more than twice that held. Entries added are value-initialised.
+template <class T>
+void fitTo(std::vector<T>& v, std::size_t n) {
+    if (v.capacity() > 2 * n) std::vector<T>().swap(v);
+    v.resize(n);
+}
+
+}  // namespace dpd
