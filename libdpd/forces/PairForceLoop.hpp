@@ -63,6 +63,9 @@ struct PairLoopContext {
     const PairRandom& random;
     std::uint64_t step;
     VelocityPredictor predictor{};
+    // The pair forces written over p.f instead of added to it (always so with a predictor): for a
+    // caller whose forces start from the pair forces, which then needs no pass clearing them.
+    bool replaceForces = false;
 };
 
 // What an evaluator needs beyond the separation. An evaluator that declares
@@ -78,8 +81,8 @@ struct EvaluatorUsesVelocity : std::true_type {};
 template <class E>
 struct EvaluatorUsesVelocity<E, std::void_t<decltype(E::kUsesVelocity)>> : std::bool_constant<E::kUsesVelocity> {};
 
-// Adds to p.f the force of every interacting pair closer than the cutoff (or, with ctx.predictor's
-// shift != 0, replaces p.f with those forces, see VelocityPredictor). The evaluator gives the
+// Adds to p.f the force of every interacting pair closer than the cutoff (or, with ctx.replaceForces
+// or ctx.predictor's shift != 0, replaces p.f with those forces, see VelocityPredictor). The evaluator gives the
 // force over r for one pair: double forceOverR(double r2, double rDotV, const PairCoeffs&, double zeta),
 // zeta being ctx.random.pairUniform(step, id_i, id_j). The particles must be sorted by ctx.cells.
 template <class Evaluator>

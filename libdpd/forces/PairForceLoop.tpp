@@ -339,7 +339,7 @@ void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evalua
     if (plan.commonCoefficients) rows(std::true_type{});
     else rows(std::false_type{});
     // With a predictor the pair forces replace p.f (which the predicted velocities were made from).
-    sums.handTo(p, predict);
+    sums.handTo(p, predict || ctx.replaceForces);
 }
 
 }  // namespace dpd

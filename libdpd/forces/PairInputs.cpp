@@ -33,18 +33,19 @@ void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, 
         y[k] = static_cast<float>(ry[k] - (lo.y() + cells.axisCell(ry[k], 1) * h.y()));
         z[k] = static_cast<float>(rz[k] - (lo.z() + cells.axisCell(rz[k], 2) * h.z()));
     }
+    if (!velocities && !ids) return;
+    // Velocities and ids in one pass, each entry written whole (the part not asked for kept).
     PairKinematics* __restrict kin = in.kinematics.data();
-    if (velocities) {
 #pragma omp parallel for schedule(static)
-        for (std::size_t k = 0; k < n; ++k) {
-            kin[k].vx = static_cast<float>(p.vx[k]);
-            kin[k].vy = static_cast<float>(p.vy[k]);
-            kin[k].vz = static_cast<float>(p.vz[k]);
+    for (std::size_t k = 0; k < n; ++k) {
+        PairKinematics e = kin[k];
+        if (velocities) {
+            e.vx = static_cast<float>(p.vx[k]);
+            e.vy = static_cast<float>(p.vy[k]);
+            e.vz = static_cast<float>(p.vz[k]);
         }
-    }
-    if (ids) {
-#pragma omp parallel for schedule(static)
-        for (std::size_t k = 0; k < n; ++k) kin[k].id = static_cast<std::uint32_t>(p.id[k]);
+        if (ids) e.id = static_cast<std::uint32_t>(p.id[k]);
+        kin[k] = e;
     }
 }
 

@@ -86,9 +86,10 @@ void System::computeForces(double predictorShift) {
     if (predictorShift != 0.0 && hasVelocityDependentNonPairForces())
         throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with tunable-slip walls");
     const ScopedTimer timer(stepTimes ? &stepTimes->forces : nullptr);
-    // With a predictor the pair loop replaces the forces (it reads them first).
-    if (predictorShift == 0.0) particles.clearForces();
-    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step), {predictorShift, &frozenOfSpecies_}};
+    // The pair loop writes its forces over the old ones (with a predictor after reading them): no
+    // pass clearing them first. The other forces are added to them.
+    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step), {predictorShift, &frozenOfSpecies_},
+                              true};
     pairKernel_(particles, ctx, forceParameters);
     bodyForce.apply(particles, frozenOfSpecies_, box);
     if (tunableSlipWalls_)

@@ -438,3 +438,37 @@ TEST(CellList, EvaluatorsThatNeedNoNoiseOrVelocityGetZerosForTheSamePairs) {
         EXPECT_EQ(std::get<2>(neither[k]), 0.0);
     }
 }
+
+TEST(CellList, ReplacingForcesWritesThePairForcesOverWhatTheParticlesHeld) {
+    // With replaceForces the loop's result is p.f = pair forces whatever p.f held; without it the pair
+    // forces are added. Same pairs, same order, so both are exact: replace(stale) == add(zero), and
+    // add(stale) - stale differs from them only by the rounding of the additions.
+    Box box;
+    box.lo = Eigen::Vector3d(0, 0, 0);
+    box.hi = Eigen::Vector3d(4.3, 3.6, 5.2);
+    Particles p = randomParticles(box, 3.0, 11);
+    CellList cells;
+    cells.setup(box, 1.0);
+    cells.sortParticles(p);
+    const PairRandom random(7);
+    PairTable table(1);
+    table.set(0, 0, {25.0, 4.5, 3.0, true});
+    PairForceParameters params;
+    params.dt = 0.04;
+    const DpdPairEvaluator<true, true> eval(params);
+    const std::size_t n = p.size();
+    PairLoopContext ctx{cells, table, random, 3};
+
+    p.clearForces();
+    accumulatePairForces(p, ctx, eval, 1.0);
+    const std::vector<double> added = p.fx;
+    for (std::size_t k = 0; k < n; ++k) { p.fx[k] = 1e3 + k; p.fy[k] = -7.0; p.fz[k] = 0.5; }
+    ctx.replaceForces = true;
+    accumulatePairForces(p, ctx, eval, 1.0);
+    for (std::size_t k = 0; k < n; ++k) ASSERT_EQ(p.fx[k], added[k]) << "particle " << k;
+    ctx.replaceForces = false;
+    for (std::size_t k = 0; k < n; ++k) p.fx[k] = 1e3 + k;
+    accumulatePairForces(p, ctx, eval, 1.0);
+    // Without replacing, what p.f held stays in: ~1e3 off, far beyond the rounding of ~13 additions at 1e3 (~3e-12).
+    for (std::size_t k = 0; k < n; ++k) ASSERT_NEAR(p.fx[k] - (1e3 + k), added[k], 1e-9) << "particle " << k;
+}
