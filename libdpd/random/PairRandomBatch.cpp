@@ -2,9 +2,14 @@
 //
 // A Philox round needs the high and low halves of two 32 x 32 -> 64-bit products per counter. AVX2
 // multiplies the even 32-bit lanes of a vector (_mm256_mul_epu32); the odd lanes are shifted down
-// and multiplied in a second instruction, and blends put the halves back in place. Integer arithmetic
-// only, so every lane gives exactly the scalar generator's bits; the conversion to a unit-variance
-// uniform is the same exact-then-one-rounding sum as unitVarianceUniform.
+// and multiplied in a second instruction, and a blend puts the high halves in place; the low halves
+// are one _mm256_mullo_epi32. Integer arithmetic only, so every lane gives exactly the scalar
+// generator's bits; the conversion to a unit-variance uniform is the same exact-then-one-rounding sum
+// as unitVarianceUniform.
+//
+// The pair force reads word 0 of the output only, and the counters of one call share their last two
+// words (the step): so round 0's product of the third word is one scalar product for all lanes, and
+// the last two rounds make only what word 0 depends on (~10 % fewer instructions than ten full rounds).
 #include "random/PairRandom.hpp"
 
 #if defined(__AVX2__)
@@ -16,33 +21,45 @@ namespace dpd {
 #if defined(__AVX2__)
 namespace {
 
-struct MulHiLo {
-    __m256i hi, lo;
-};
+inline __m256i broadcast(std::uint32_t word) { return _mm256_set1_epi32(static_cast<int>(word)); }
 
-inline MulHiLo mulHiLo(__m256i a, __m256i m) {
+inline __m256i xor3(__m256i a, __m256i b, __m256i c) { return _mm256_xor_si256(_mm256_xor_si256(a, b), c); }
+
+// The high halves of the eight products a * m.
+inline __m256i mulHi(__m256i a, __m256i m) {
     const __m256i even = _mm256_mul_epu32(a, m);
     const __m256i odd = _mm256_mul_epu32(_mm256_srli_epi64(a, 32), m);
-    return {_mm256_blend_epi32(_mm256_srli_epi64(even, 32), odd, 0xAA),
-            _mm256_blend_epi32(even, _mm256_slli_epi64(odd, 32), 0xAA)};
+    return _mm256_blend_epi32(_mm256_srli_epi64(even, 32), odd, 0xAA);
 }
 
-// First output word of Philox4x32-10 for eight counters (c0, c1, c2, c3) under one key.
-inline __m256i philoxFirstWord(__m256i c0, __m256i c1, __m256i c2, __m256i c3, PhiloxKey key) {
-    const __m256i m0 = _mm256_set1_epi32(static_cast<int>(0xD2511F53u));
-    const __m256i m1 = _mm256_set1_epi32(static_cast<int>(0xCD9E8D57u));
-    for (int round = 0; round < 10; ++round) {
-        const MulHiLo p0 = mulHiLo(c0, m0), p1 = mulHiLo(c2, m1);
-        const __m256i k0 = _mm256_set1_epi32(static_cast<int>(key[0]));
-        const __m256i k1 = _mm256_set1_epi32(static_cast<int>(key[1]));
-        c0 = _mm256_xor_si256(_mm256_xor_si256(p1.hi, c1), k0);
-        c1 = p1.lo;
-        c2 = _mm256_xor_si256(_mm256_xor_si256(p0.hi, c3), k1);
-        c3 = p0.lo;
-        key[0] += 0x9E3779B9u;
-        key[1] += 0xBB67AE85u;
+// Word 0 of Philox4x32-10 for the eight counters (lo, hi, s0, s1) under one key.
+inline __m256i philoxFirstWord(__m256i lo, __m256i hi, std::uint32_t s0, std::uint32_t s1, PhiloxKey key) {
+    const __m256i m0 = broadcast(kPhiloxM0), m1 = broadcast(kPhiloxM1);
+    // Round 0: (c0, c1, c2, c3) = (lo, hi, s0, s1) becomes
+    // (hi(M1 s0) ^ hi ^ k0, lo(M1 s0), hi(M0 lo) ^ s1 ^ k1, lo(M0 lo)).
+    const std::uint64_t p = std::uint64_t{kPhiloxM1} * s0;
+    __m256i c0 = _mm256_xor_si256(hi, broadcast(static_cast<std::uint32_t>(p >> 32) ^ key[0]));
+    __m256i c1 = broadcast(static_cast<std::uint32_t>(p));
+    __m256i c2 = _mm256_xor_si256(mulHi(lo, m0), broadcast(s1 ^ key[1]));
+    __m256i c3 = _mm256_mullo_epi32(lo, m0);
+    for (int round = 1; round < 8; ++round) {
+        key[0] += kPhiloxW0;
+        key[1] += kPhiloxW1;
+        const __m256i hi0 = mulHi(c0, m0), lo0 = _mm256_mullo_epi32(c0, m0);
+        const __m256i hi1 = mulHi(c2, m1), lo1 = _mm256_mullo_epi32(c2, m1);
+        c0 = xor3(hi1, c1, broadcast(key[0]));
+        c1 = lo1;
+        c2 = xor3(hi0, c3, broadcast(key[1]));
+        c3 = lo0;
     }
-    return c0;
+    // Round 8: only the words round 9 reads, c1 and c2.
+    key[0] += kPhiloxW0;
+    key[1] += kPhiloxW1;
+    const __m256i c1Last = _mm256_mullo_epi32(c2, m1);
+    const __m256i c2Last = xor3(mulHi(c0, m0), c3, broadcast(key[1]));
+    // Round 9: word 0 alone.
+    key[0] += kPhiloxW0;
+    return xor3(mulHi(c2Last, m1), c1Last, broadcast(key[0]));
 }
 
 }  // namespace
@@ -52,8 +69,8 @@ void PairRandom::orderedPairUniforms(std::uint64_t step, const std::uint32_t* lo
                                      double* zeta, std::size_t n) const {
     std::size_t k = 0;
 #if defined(__AVX2__)
-    const __m256i stepLo = _mm256_set1_epi32(static_cast<int>(static_cast<std::uint32_t>(step)));
-    const __m256i stepHi = _mm256_set1_epi32(static_cast<int>(static_cast<std::uint32_t>(step >> 32) ^ kPairStream));
+    const auto stepLo = static_cast<std::uint32_t>(step);
+    const std::uint32_t stepHi = static_cast<std::uint32_t>(step >> 32) ^ kPairStream;
     const __m256i signBit = _mm256_set1_epi32(static_cast<int>(0x80000000u));
     const __m256d half = _mm256_set1_pd(0.5), scale = _mm256_set1_pd(kSqrt12 * 0x1p-32);
     for (; k + 8 <= n; k += 8) {

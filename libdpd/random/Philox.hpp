@@ -11,16 +11,18 @@ namespace dpd {
 using PhiloxCounter = std::array<std::uint32_t, 4>;
 using PhiloxKey = std::array<std::uint32_t, 2>;
 
+// The round multipliers and the key's increments per round (a Weyl sequence).
+inline constexpr std::uint32_t kPhiloxM0 = 0xD2511F53u, kPhiloxM1 = 0xCD9E8D57u;
+inline constexpr std::uint32_t kPhiloxW0 = 0x9E3779B9u, kPhiloxW1 = 0xBB67AE85u;
+
 inline PhiloxCounter philox4x32(PhiloxCounter c, PhiloxKey k) {
-    constexpr std::uint32_t M0 = 0xD2511F53u, M1 = 0xCD9E8D57u;
-    constexpr std::uint32_t W0 = 0x9E3779B9u, W1 = 0xBB67AE85u;
     for (int round = 0; round < 10; ++round) {
-        const std::uint64_t p0 = static_cast<std::uint64_t>(M0) * c[0];
-        const std::uint64_t p1 = static_cast<std::uint64_t>(M1) * c[2];
+        const std::uint64_t p0 = static_cast<std::uint64_t>(kPhiloxM0) * c[0];
+        const std::uint64_t p1 = static_cast<std::uint64_t>(kPhiloxM1) * c[2];
         c = {static_cast<std::uint32_t>(p1 >> 32) ^ c[1] ^ k[0], static_cast<std::uint32_t>(p1),
              static_cast<std::uint32_t>(p0 >> 32) ^ c[3] ^ k[1], static_cast<std::uint32_t>(p0)};
-        k[0] += W0;
-        k[1] += W1;
+        k[0] += kPhiloxW0;
+        k[1] += kPhiloxW1;
     }
     return c;
 }
