@@ -14,7 +14,7 @@ std::size_t PairInputs::capacityBytes() const {
 
 void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, bool ids, PairInputs& in) {
     const std::size_t n = p.size();
-    fitTo(in.x, n); fitTo(in.y, n); fitTo(in.z, n);
+    fitTo(in.x, n + kPairInputPadding); fitTo(in.y, n + kPairInputPadding); fitTo(in.z, n + kPairInputPadding);
     if (velocities || ids) fitTo(in.kinematics, n);
     const Eigen::Vector3d& h = cells.cellSize();
     const Eigen::Vector3d& lo = cells.box().lo;

@@ -29,8 +29,13 @@ struct alignas(16) PairKinematics {
     std::uint32_t id;  // low 32 bits of the id
 };
 
+// Entries of x, y, z past the last particle: the search loads eight lanes from any particle on,
+// unmasked (AVX2's masked loads cost Zen 3 several times a plain one), and ignores what lies past the
+// end of a cell.
+inline constexpr std::size_t kPairInputPadding = 7;
+
 struct PairInputs {
-    std::vector<float> x, y, z;           // r - (lower corner of the particle's cell)
+    std::vector<float> x, y, z;           // r - (lower corner of the particle's cell), then the padding
     std::vector<PairKinematics> kinematics;  // velocities and ids, each filled only when asked for
     float cellX = 1.0f, cellY = 1.0f, cellZ = 1.0f;  // the cell size
 

@@ -136,16 +136,17 @@ inline std::size_t appendRunPairs(const NeighbourRun& run, const PairSearchInput
     const __m256i step1 = _mm256_set1_epi32(static_cast<int>(run.zStep1) - 1);
     const __m256i step2 = _mm256_set1_epi32(static_cast<int>(run.zStep2) - 1);
     for (std::uint32_t j = run.jBegin; j < run.jEnd; j += 8) {
-        // Lanes past the end are masked: not loaded (no read past the arrays) and never kept.
+        // Lanes past the end are loaded (the inputs have room: kPairInputPadding; a masked load
+        // cost Zen 3 several times as much) but never kept.
         const __m256i valid = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(run.jEnd - j)), lanes);
         const __m256i js = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(j)), lanes);
         // Cells up along z: 0, 1 or 2 (the comparisons give -1 per step passed).
         const __m256i cellsUp = _mm256_sub_epi32(_mm256_setzero_si256(),
                                                  _mm256_add_epi32(_mm256_cmpgt_epi32(js, step1), _mm256_cmpgt_epi32(js, step2)));
         const __m256 offZ = _mm256_fmadd_ps(_mm256_cvtepi32_ps(cellsUp), _mm256_set1_ps(in.cellZ), _mm256_set1_ps(run.offZ));
-        const __m256 X = _mm256_add_ps(_mm256_maskload_ps(in.x + j, valid), offX);
-        const __m256 Y = _mm256_add_ps(_mm256_maskload_ps(in.y + j, valid), offY);
-        const __m256 Z = _mm256_add_ps(_mm256_maskload_ps(in.z + j, valid), offZ);
+        const __m256 X = _mm256_add_ps(_mm256_loadu_ps(in.x + j), offX);
+        const __m256 Y = _mm256_add_ps(_mm256_loadu_ps(in.y + j), offY);
+        const __m256 Z = _mm256_add_ps(_mm256_loadu_ps(in.z + j), offZ);
         for (std::uint32_t i = run.iBegin; i < run.iEnd; ++i) {
             __m256i keep = valid;
             if (run.onlyAfterI) keep = _mm256_and_si256(keep, _mm256_cmpgt_epi32(js, _mm256_set1_epi32(static_cast<int>(i))));
@@ -161,12 +162,12 @@ inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, 
                                float offX, float offY, bool split, const StageOutput& st, std::uint32_t s) {
     const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     for (std::uint32_t j = jBegin; j < jEnd; j += 8) {
-        const __m256i valid = _mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(jEnd - j)), lanes);
         const __m256i js = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(j)), lanes);
-        // Lanes past the cell's end are written too, and overwritten by the next cell's particles.
-        _mm256_storeu_ps(st.x + s, _mm256_add_ps(_mm256_maskload_ps(in.x + j, valid), _mm256_set1_ps(offX)));
-        _mm256_storeu_ps(st.y + s, _mm256_add_ps(_mm256_maskload_ps(in.y + j, valid), _mm256_set1_ps(offY)));
-        _mm256_storeu_ps(st.z + s, _mm256_maskload_ps(in.z + j, valid));
+        // Lanes past the cell's end are read (the inputs have room: kPairInputPadding) and written
+        // too, and overwritten by the next cell's particles.
+        _mm256_storeu_ps(st.x + s, _mm256_add_ps(_mm256_loadu_ps(in.x + j), _mm256_set1_ps(offX)));
+        _mm256_storeu_ps(st.y + s, _mm256_add_ps(_mm256_loadu_ps(in.y + j), _mm256_set1_ps(offY)));
+        _mm256_storeu_ps(st.z + s, _mm256_loadu_ps(in.z + j));
         _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.j + s), js);
         if (split)
             _mm256_storeu_si256(reinterpret_cast<__m256i*>(st.mobile + s),
