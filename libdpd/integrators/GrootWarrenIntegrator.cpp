@@ -25,17 +25,18 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
     hx_.resize(n); hy_.resize(n); hz_.resize(n);
     forEachParticle(sys, [&](long i, auto mobile) {
         hx_[i] = p.vx[i]; hy_[i] = p.vy[i]; hz_[i] = p.vz[i];
-        if (!mobile) return;
-        p.vx[i] += predict * p.fx[i];
-        p.vy[i] += predict * p.fy[i];
-        p.vz[i] += predict * p.fz[i];
+        const double s = mobileFactor(mobile) * predict;  // a frozen particle keeps its wall's velocity
+        p.vx[i] += s * p.fx[i];
+        p.vy[i] += s * p.fy[i];
+        p.vz[i] += s * p.fz[i];
     });
     sys.computeForces();
     forEachParticle(sys, [&](long i, auto mobile) {
-        if (!mobile) return;  // the predictor left a frozen particle's velocity alone
-        p.vx[i] = hx_[i] + halfDt * p.fx[i];
-        p.vy[i] = hy_[i] + halfDt * p.fy[i];
-        p.vz[i] = hz_[i] + halfDt * p.fz[i];
+        // A frozen particle gets back the velocity the predictor left alone.
+        const double h = mobileFactor(mobile) * halfDt;
+        p.vx[i] = hx_[i] + h * p.fx[i];
+        p.vy[i] = hy_[i] + h * p.fy[i];
+        p.vz[i] = hz_[i] + h * p.fz[i];
     });
     sys.completeWalls();
     return walls;

@@ -6,11 +6,13 @@ namespace dpd {
 
 void kick(System& sys, double h) {
     Particles& p = sys.particles;
-    forEachParticle(sys, [&](long i, auto mobile) {
-        if (!mobile) return;
-        p.vx[i] += h * p.fx[i];
-        p.vy[i] += h * p.fy[i];
-        p.vz[i] += h * p.fz[i];
+    double *vx = p.vx.data(), *vy = p.vy.data(), *vz = p.vz.data();
+    const double *fx = p.fx.data(), *fy = p.fy.data(), *fz = p.fz.data();
+    forEachParticle(sys, [=](long i, auto mobile) {
+        const double hi = mobileFactor(mobile) * h;  // a frozen particle's v + 0 f is its v
+        vx[i] += hi * fx[i];
+        vy[i] += hi * fy[i];
+        vz[i] += hi * fz[i];
     });
 }
 
@@ -36,11 +38,10 @@ void halfKickAndDrift(System& sys) {
     double *vx = p.vx.data(), *vy = p.vy.data(), *vz = p.vz.data();
     const double *fx = p.fx.data(), *fy = p.fy.data(), *fz = p.fz.data();
     forEachParticle(sys, [=](long i, auto mobile) {
-        if (mobile) {
-            vx[i] += halfDt * fx[i];
-            vy[i] += halfDt * fy[i];
-            vz[i] += halfDt * fz[i];
-        }
+        const double h = mobileFactor(mobile) * halfDt;  // a frozen particle's v + 0 f is its v
+        vx[i] += h * fx[i];
+        vy[i] += h * fy[i];
+        vz[i] += h * fz[i];
         rx[i] += dt * vx[i];
         ry[i] += dt * vy[i];
         rz[i] += dt * vz[i];
