@@ -50,55 +50,86 @@ struct RuleCounts {
     long reflected = 0, crossed = 0;
 };
 
-// One bounce-layer wall: particles in the layer moving towards the solid are turned round; those
-// behind the plane are mirrored back, turned round and counted as crossings.
-RuleCounts applyBounceLayer(const PlanarWall& w, Particles& p, const std::vector<std::uint8_t>& frozen,
-                            const Box& box, const PairRandom& random, std::uint64_t step, double kT) {
+// The passes over the particles go block by block, and look at particles one by one (species,
+// rule, counters) only in the blocks where one lies closer to a wall than `reach` (behind it, for
+// reach 0): a test of a whole block that the compiler vectorises. Few blocks hold one: those with a
+// particle that crossed, and those of the walls' own frozen particles.
+constexpr long kWallBlock = 16;
+
+bool anyWithin(const PlanarWall& w, const Particles& p, long begin, long end, double reach) {
+    bool any = false;
+    for (long i = begin; i < end; ++i) any |= w.signedDistance(p.rx[i], p.ry[i], p.rz[i]) < reach;
+    return any;
+}
+
+// A bounce-layer wall on mobile particle i: in the layer and moving towards the solid, it is turned
+// round; behind the plane, mirrored back, turned round and counted as a crossing.
+void bounceLayerParticle(const PlanarWall& w, Particles& p, std::size_t i, const Box& box, const PairRandom& random,
+                         std::uint64_t step, double kT, RuleCounts& counts) {
+    const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
+    if (depth >= w.layer) return;
+    if (depth < 0.0) {
+        ++counts.crossed;
+        reflectAtPlane(w, depth, p, i, box, random, step, kT);
+    } else if ((velocityOf(p, i) - w.velocity).dot(w.normal) >= 0.0) {
+        return;  // in the layer but already leaving it
+    } else {
+        setVelocity(p, i, turnedRound(w.normal, velocityOf(p, i) - w.velocity, random, step, p.id[i], kT, kStreamReflection) + w.velocity);
+    }
+    ++counts.reflected;
+}
+
+// A wall whose rule acts at the plane, on mobile particle i: behind the plane, it is reflected (or,
+// bounce-forward, its crossing recorded to be finished after the step) and counted.
+void atPlaneParticle(const PlanarWall& w, std::uint32_t wallIndex, Particles& p, std::size_t i, const Box& box,
+                     const PairRandom& random, std::uint64_t step, double kT, std::vector<DeferredBounce>& deferred,
+                     RuleCounts& counts) {
+    const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
+    if (depth >= 0.0) return;
+    ++counts.crossed;
+    ++counts.reflected;
+    if (w.rule == ReflectionRule::bounceForward) {
+        const Eigen::Vector3d m = mirrored(w, p, i, depth);
+#pragma omp critical(dpdDeferredBounce)
+        deferred.push_back({p.id[i], wallIndex, m.x(), m.y(), m.z()});
+        return;
+    }
+    reflectAtPlane(w, depth, p, i, box, random, step, kT);
+}
+
+// visit(i, counts) for the mobile particles of the blocks that hold a particle closer to wall w than
+// `reach`, in parallel; the counts summed.
+template <class Visit>
+RuleCounts forParticlesNearWall(const PlanarWall& w, const Particles& p, const std::vector<std::uint8_t>& frozen,
+                                double reach, const Visit& visit) {
     const long n = static_cast<long>(p.size());
     long reflected = 0, crossed = 0;
 #pragma omp parallel for reduction(+ : reflected, crossed) schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (frozen[p.species[i]]) continue;
-        const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
-        if (depth >= w.layer) continue;
-        if (depth < 0.0) {
-            ++crossed;
-        } else if ((velocityOf(p, i) - w.velocity).dot(w.normal) >= 0.0) {
-            continue;  // in the layer but already leaving it
-        } else {
-            const std::size_t k = static_cast<std::size_t>(i);
-            setVelocity(p, k, turnedRound(w.normal, velocityOf(p, k) - w.velocity, random, step, p.id[k], kT, kStreamReflection) + w.velocity);
-            ++reflected;
-            continue;
-        }
-        reflectAtPlane(w, depth, p, static_cast<std::size_t>(i), box, random, step, kT);
-        ++reflected;
+    for (long b = 0; b < n; b += kWallBlock) {
+        const long e = std::min(b + kWallBlock, n);
+        if (!anyWithin(w, p, b, e, reach)) continue;
+        RuleCounts counts;
+        for (long i = b; i < e; ++i)
+            if (!frozen[p.species[i]]) visit(static_cast<std::size_t>(i), counts);
+        reflected += counts.reflected;
+        crossed += counts.crossed;
     }
     return {reflected, crossed};
 }
 
-// One wall whose rule acts at the plane; bounce-forward crossings are only recorded.
+RuleCounts applyBounceLayer(const PlanarWall& w, Particles& p, const std::vector<std::uint8_t>& frozen,
+                            const Box& box, const PairRandom& random, std::uint64_t step, double kT) {
+    return forParticlesNearWall(w, p, frozen, w.layer, [&](std::size_t i, RuleCounts& counts) {
+        bounceLayerParticle(w, p, i, box, random, step, kT, counts);
+    });
+}
+
 RuleCounts applyAtPlane(const PlanarWall& w, std::uint32_t wallIndex, Particles& p,
                         const std::vector<std::uint8_t>& frozen, const Box& box, const PairRandom& random,
                         std::uint64_t step, double kT, std::vector<DeferredBounce>& deferred) {
-    const long n = static_cast<long>(p.size());
-    long crossed = 0;
-#pragma omp parallel for reduction(+ : crossed) schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (frozen[p.species[i]]) continue;
-        const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
-        if (depth >= 0.0) continue;
-        ++crossed;
-        const std::size_t k = static_cast<std::size_t>(i);
-        if (w.rule == ReflectionRule::bounceForward) {
-            const Eigen::Vector3d m = mirrored(w, p, k, depth);
-#pragma omp critical(dpdDeferredBounce)
-            deferred.push_back({p.id[k], wallIndex, m.x(), m.y(), m.z()});
-            continue;
-        }
-        reflectAtPlane(w, depth, p, k, box, random, step, kT);
-    }
-    return {crossed, crossed};
+    return forParticlesNearWall(w, p, frozen, 0.0, [&](std::size_t i, RuleCounts& counts) {
+        atPlaneParticle(w, wallIndex, p, i, box, random, step, kT, deferred, counts);
+    });
 }
 
 // The deferred crossing of a particle (the list is sorted by id), or nullptr.
@@ -199,9 +230,14 @@ WallCounters WallSet::reflect(Particles& p, const std::vector<std::uint8_t>& fro
     const long n = static_cast<long>(p.size());
     long inside = 0;
 #pragma omp parallel for reduction(+ : inside) schedule(static)
-    for (long i = 0; i < n; ++i)
-        if (!frozen[p.species[i]] && isInsideSolid(p.rx[i], p.ry[i], p.rz[i]) && !findDeferred(deferred, p.id[i]))
-            ++inside;
+    for (long b = 0; b < n; b += kWallBlock) {
+        const long e = std::min(b + kWallBlock, n);
+        if (std::none_of(walls_.begin(), walls_.end(), [&](const PlanarWall& w) { return anyWithin(w, p, b, e, 0.0); }))
+            continue;
+        for (long i = b; i < e; ++i)
+            if (!frozen[p.species[i]] && isInsideSolid(p.rx[i], p.ry[i], p.rz[i]) && !findDeferred(deferred, p.id[i]))
+                ++inside;
+    }
     counts.insideAfter = inside;
     return counts;
 }
