@@ -1,5 +1,6 @@
 #include "integrators/DpdVvIntegrator.hpp"
 
+#include "integrators/ForEachParticle.hpp"
 #include "integrators/PartialPairForces.hpp"
 #include "integrators/StepParts.hpp"
 #include "run/System.hpp"
@@ -9,7 +10,6 @@ namespace dpd {
 WallCounters DpdVvIntegrator::step(System& sys) {
     Particles& p = sys.particles;
     const double halfDt = 0.5 * sys.dt();
-    const auto& frozen = sys.frozenOfSpecies();
     const long n = static_cast<long>(p.size());
     halfKickAndDrift(sys);
     const WallCounters walls = endMove(sys);
@@ -19,16 +19,13 @@ WallCounters DpdVvIntegrator::step(System& sys) {
     // dissipative pair loop gives f^D(v(t+dt) - v').
     vx_.resize(n); vy_.resize(n); vz_.resize(n);
     fx_.resize(n); fy_.resize(n); fz_.resize(n);
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
+    forEachParticle(sys, [&](long i, auto mobile) {
         fx_[i] = p.fx[i]; fy_[i] = p.fy[i]; fz_[i] = p.fz[i];
-        const bool mobile = !frozen[p.species[i]];
-        const double kx = mobile ? halfDt * p.fx[i] : 0.0;
-        const double ky = mobile ? halfDt * p.fy[i] : 0.0;
-        const double kz = mobile ? halfDt * p.fz[i] : 0.0;
+        const double h = mobileFactor(mobile) * halfDt;
+        const double kx = h * p.fx[i], ky = h * p.fy[i], kz = h * p.fz[i];
         vx_[i] = p.vx[i] + kx; vy_[i] = p.vy[i] + ky; vz_[i] = p.vz[i] + kz;
         p.vx[i] = kx; p.vy[i] = ky; p.vz[i] = kz;
-    }
+    });
     p.clearForces();
     addDissipativeForces(sys);
 #pragma omp parallel for schedule(static)
