@@ -1,5 +1,6 @@
 #include "sampling/BinAccumulator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -26,22 +27,46 @@ BinAccumulator::BinAccumulator(const BinLayout& layout, std::vector<std::uint8_t
     if (blockSamples < 1) throw std::invalid_argument("a block must hold at least one sample");
 }
 
+namespace {
+
+// Particle ranges of a sample: enough for the threads of a node to share (8), no range under ~4,000
+// particles (the bins of a range are cleared and added for every sample), and their bins together no
+// more than ~4 MB. A function of the two counts only, never of the number of threads.
+std::size_t sampleRanges(std::size_t particles, std::size_t bins) {
+    constexpr std::size_t kMostRanges = 8, kLeastParticles = 4096, kMostBytes = std::size_t{4} << 20;
+    const std::size_t byMemory = std::max<std::size_t>(1, kMostBytes / (bins * sizeof(BinSums)));
+    return std::max<std::size_t>(1, std::min({kMostRanges, particles / kLeastParticles, byMemory}));
+}
+
+}  // namespace
+
+void BinAccumulator::addParticles(const Particles& p, std::size_t begin, std::size_t end, BinSums* bins) const {
+    const std::vector<double>& r = p.position(layout_.axis);
+    const std::vector<double>& r2 = p.position(layout_.twoAxes() ? layout_.axis2 : layout_.axis);
+    for (std::size_t i = begin; i < end; ++i) {
+        if (!speciesMask_[p.species[i]]) continue;
+        const int b = layout_.binOf(r[i]);
+        if (b < 0) continue;
+        const int j = layout_.twoAxes() ? layout_.binOf2(r2[i]) : 0;
+        if (j < 0) continue;
+        bins[b + layout_.nBins * j].add(r[i] - layout_.centre(b), p.vx[i], p.vy[i], p.vz[i]);
+    }
+}
+
 void BinAccumulator::sample(const Particles& p) {
     if (blocks_.empty() || samplesPerBlock_.back() == blockSamples_) {
         blocks_.emplace_back(layout_.binCount());
         samplesPerBlock_.push_back(0);
     }
     std::vector<BinSums>& block = blocks_.back();
-    const std::vector<double>& r = p.position(layout_.axis);
-    const std::vector<double>& r2 = p.position(layout_.twoAxes() ? layout_.axis2 : layout_.axis);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        if (!speciesMask_[p.species[i]]) continue;
-        const int b = layout_.binOf(r[i]);
-        if (b < 0) continue;
-        const int j = layout_.twoAxes() ? layout_.binOf2(r2[i]) : 0;
-        if (j < 0) continue;
-        block[b + layout_.nBins * j].add(r[i] - layout_.centre(b), p.vx[i], p.vy[i], p.vz[i]);
-    }
+    const std::size_t bins = block.size(), n = p.size();
+    const std::size_t ranges = sampleRanges(n, bins);
+    rangeSums_.assign(ranges * bins, BinSums{});
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < ranges; ++k) addParticles(p, n * k / ranges, n * (k + 1) / ranges, &rangeSums_[k * bins]);
+    for (std::size_t k = 0; k < ranges; ++k)
+        for (std::size_t b = 0; b < bins; ++b)
+            for (int f = 0; f < BinSums::kFields; ++f) block[b].s[f] += rangeSums_[k * bins + b].s[f];
     ++samplesPerBlock_.back();
     ++samples_;
 }

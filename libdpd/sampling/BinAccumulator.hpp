@@ -12,6 +12,10 @@
 // Sums are kept in blocks of `blockSamples` samples; the spread of the block means gives honest
 // error bars for correlated data (a block much longer than the correlation time is one independent
 // measurement).
+//
+// A sample runs in parallel and gives the same sums on any number of threads: the particles are cut
+// into a fixed number of index ranges (set by the particle and bin counts alone), each range summed
+// into bins of its own, and those added to the block in range order.
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
 
@@ -103,6 +107,10 @@ private:
     int stressFlowAxis_ = -1;
     std::vector<std::vector<BinSums>> blocks_;
     std::vector<long> samplesPerBlock_;
+    std::vector<BinSums> rangeSums_;  // scratch of sample(): one set of bins per particle range
+
+    // The sums of particles [begin, end) into `bins` (binCount() of them).
+    void addParticles(const Particles& p, std::size_t begin, std::size_t end, BinSums* bins) const;
 };
 
 }  // namespace dpd
