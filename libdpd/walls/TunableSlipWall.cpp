@@ -4,6 +4,7 @@
 #include "core/Particles.hpp"
 #include "random/PairRandom.hpp"
 #include "walls/PlanarWall.hpp"
+#include "walls/WallBlocks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,21 +45,26 @@ void addTunableSlipForces(const PlanarWall& w, std::size_t wallIndex, Particles&
     const std::uint32_t stream = tunableSlipStream(wallIndex);
     const bool threeD = box.isActiveAxis(1);
     const long n = static_cast<long>(p.size());
+    // Particle by particle only in the blocks with one within the wall's reach (WallBlocks.hpp).
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-        if (frozen[p.species[i]]) continue;
-        const double z = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
-        if (!(z > 0.0) || z >= reach) continue;
-        const Eigen::Vector3d v = Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]) - w.velocity;
-        Eigen::Vector3d xi = Eigen::Vector3d::Zero();
-        if (ts.frictionWeight(z) > 0.0) {
-            const auto g = random.particleGaussians(step, p.id[i], stream);
-            xi = Eigen::Vector3d(g[0], threeD ? g[1] : 0.0, g[2]);
+    for (long b = 0; b < n; b += kWallBlock) {
+        const long e = std::min(b + kWallBlock, n);
+        if (!anyWithin(w, p, b, e, reach)) continue;
+        for (long i = b; i < e; ++i) {
+            if (frozen[p.species[i]]) continue;
+            const double z = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
+            if (!(z > 0.0) || z >= reach) continue;
+            const Eigen::Vector3d v = Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]) - w.velocity;
+            Eigen::Vector3d xi = Eigen::Vector3d::Zero();
+            if (ts.frictionWeight(z) > 0.0) {
+                const auto g = random.particleGaussians(step, p.id[i], stream);
+                xi = Eigen::Vector3d(g[0], threeD ? g[1] : 0.0, g[2]);
+            }
+            const Eigen::Vector3d f = ts.force(z, w.normal, v, xi, kT, dt);
+            p.fx[i] += f.x();
+            if (threeD) p.fy[i] += f.y();
+            p.fz[i] += f.z();
         }
-        const Eigen::Vector3d f = ts.force(z, w.normal, v, xi, kT, dt);
-        p.fx[i] += f.x();
-        if (threeD) p.fy[i] += f.y();
-        p.fz[i] += f.z();
     }
 }
 

@@ -1,5 +1,6 @@
 #include "walls/WallSet.hpp"
 
+#include "walls/WallBlocks.hpp"
 #include "walls/WallVelocityRules.hpp"
 
 #include <algorithm>
@@ -50,17 +51,6 @@ struct RuleCounts {
     long reflected = 0, crossed = 0;
 };
 
-// The passes over the particles go block by block, and look at particles one by one (species,
-// rule, counters) only in the blocks where one lies closer to a wall than `reach` (behind it, for
-// reach 0): a test of a whole block that the compiler vectorises. Few blocks hold one: those with a
-// particle that crossed, and those of the walls' own frozen particles.
-constexpr long kWallBlock = 16;
-
-bool anyWithin(const PlanarWall& w, const Particles& p, long begin, long end, double reach) {
-    bool any = false;
-    for (long i = begin; i < end; ++i) any |= w.signedDistance(p.rx[i], p.ry[i], p.rz[i]) < reach;
-    return any;
-}
 
 // A bounce-layer wall on mobile particle i: in the layer and moving towards the solid, it is turned
 // round; behind the plane, mirrored back, turned round and counted as a crossing.
