@@ -398,6 +398,29 @@ std::vector<std::tuple<double, double, double>> recordedPairs(Particles& p, cons
 
 }  // namespace
 
+namespace {
+
+// Random particles at rho 3 in a 4.3 x 3.6 x 5.2 box, sorted by a cell list for cutoff 1; one species
+// with a = 25, gamma = 4.5, sigma = 3.
+struct SortedFluid {
+    Particles p;
+    CellList cells;
+    PairTable table{1};
+};
+
+SortedFluid sortedFluid(std::uint64_t seed) {
+    Box box;
+    box.lo = Eigen::Vector3d(0, 0, 0);
+    box.hi = Eigen::Vector3d(4.3, 3.6, 5.2);
+    SortedFluid f{randomParticles(box, 3.0, seed), {}, PairTable(1)};
+    f.cells.setup(box, 1.0);
+    f.cells.sortParticles(f.p);
+    f.table.set(0, 0, {25.0, 4.5, 3.0, true});
+    return f;
+}
+
+}  // namespace
+
 static_assert(EvaluatorUsesRandom<RecordingEvaluator>::value, "an evaluator that declares nothing gets zeta");
 static_assert(EvaluatorUsesVelocity<RecordingEvaluator>::value, "an evaluator that declares nothing gets r.v");
 static_assert(!EvaluatorUsesRandom<DeclaringEvaluator<false, true>>::value, "");
@@ -407,17 +430,10 @@ TEST(CellList, EvaluatorsThatNeedNoNoiseOrVelocityGetZerosForTheSamePairs) {
     // The conservative-only and dissipative-only evaluators of the split integrators declare that they
     // use no random number (and the conservative one no velocity): the loop must then pass exact zeros
     // instead, and visit the very same pairs with the same r^2 (and r.v where it is still used).
-    Box box;
-    box.lo = Eigen::Vector3d(0, 0, 0);
-    box.hi = Eigen::Vector3d(4.3, 3.6, 5.2);
-    Particles p = randomParticles(box, 3.0, 7);
-    CellList cells;
-    cells.setup(box, 1.0);
-    cells.sortParticles(p);
+    SortedFluid f = sortedFluid(7);
+    Particles& p = f.p;
     const PairRandom random(99);
-    PairTable table(1);
-    table.set(0, 0, {25.0, 4.5, 3.0, true});
-    const PairLoopContext ctx{cells, table, random, 5};
+    const PairLoopContext ctx{f.cells, f.table, random, 5};
 
     const auto full = recordedPairs<DeclaringEvaluator<true, true>>(p, ctx, 1.0);
     const auto noNoise = recordedPairs<DeclaringEvaluator<false, true>>(p, ctx, 1.0);
@@ -443,21 +459,14 @@ TEST(CellList, ReplacingForcesWritesThePairForcesOverWhatTheParticlesHeld) {
     // With replaceForces the loop's result is p.f = pair forces whatever p.f held; without it the pair
     // forces are added. Same pairs, same order, so both are exact: replace(stale) == add(zero), and
     // add(stale) - stale differs from them only by the rounding of the additions.
-    Box box;
-    box.lo = Eigen::Vector3d(0, 0, 0);
-    box.hi = Eigen::Vector3d(4.3, 3.6, 5.2);
-    Particles p = randomParticles(box, 3.0, 11);
-    CellList cells;
-    cells.setup(box, 1.0);
-    cells.sortParticles(p);
+    SortedFluid f = sortedFluid(11);
+    Particles& p = f.p;
     const PairRandom random(7);
-    PairTable table(1);
-    table.set(0, 0, {25.0, 4.5, 3.0, true});
     PairForceParameters params;
     params.dt = 0.04;
     const DpdPairEvaluator<true, true> eval(params);
     const std::size_t n = p.size();
-    PairLoopContext ctx{cells, table, random, 3};
+    PairLoopContext ctx{f.cells, f.table, random, 3};
 
     p.clearForces();
     accumulatePairForces(p, ctx, eval, 1.0);
