@@ -55,6 +55,9 @@ std::vector<StencilEntry> halfStencil(const Box& box);
 struct VelocityPredictor {
     double shift = 0.0;
     const std::vector<std::uint8_t>* frozenOfSpecies = nullptr;  // null or all zero: nothing frozen
+    // Null, or the last sort's order where it left the forces behind (SortForces::Leave): then
+    // particle k's force f is p.f[forceOrder[k]].
+    const std::uint32_t* forceOrder = nullptr;
 };
 
 struct PairLoopContext {

@@ -49,8 +49,8 @@ void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, 
     }
 }
 
-void fillPredictedVelocities(const Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies, bool ids,
-                             PairInputs& in) {
+void fillPredictedVelocities(const Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies,
+                             const std::uint32_t* forceOrder, bool ids, PairInputs& in) {
     const std::size_t n = p.size();
     fitTo(in.kinematics, n);
     const double* __restrict fx = p.fx.data();
@@ -69,24 +69,30 @@ void fillPredictedVelocities(const Particles& p, double shift, const std::vector
             if ((*frozenOfSpecies)[s]) shiftOf[s] = 0.0;
     const bool anyFrozen = std::any_of(shiftOf.begin(), shiftOf.end(), [](double c) { return c == 0.0; });
     const std::uint8_t* __restrict species = p.species.data();
-    const auto fill = [&](auto perSpecies, auto withIds) {
+    const std::uint32_t* __restrict order = forceOrder;
+    const auto fill = [&](auto perSpecies, auto withIds, auto forcesInOrder) {
 #pragma omp parallel for schedule(static)
         for (std::size_t k = 0; k < n; ++k) {
             const double c = decltype(perSpecies)::value ? shiftOf[species[k]] : shift;
+            const std::size_t f = decltype(forcesInOrder)::value ? k : order[k];
             PairKinematics e;
-            e.vx = static_cast<float>(vx[k] + c * fx[k]);
-            e.vy = static_cast<float>(vy[k] + c * fy[k]);
-            e.vz = static_cast<float>(vz[k] + c * fz[k]);
+            e.vx = static_cast<float>(vx[k] + c * fx[f]);
+            e.vy = static_cast<float>(vy[k] + c * fy[f]);
+            e.vz = static_cast<float>(vz[k] + c * fz[f]);
             e.id = decltype(withIds)::value ? static_cast<std::uint32_t>(id[k]) : kin[k].id;
             kin[k] = e;
         }
     };
+    const auto withForces = [&](auto perSpecies, auto withIds) {
+        if (forceOrder) fill(perSpecies, withIds, std::false_type{});
+        else fill(perSpecies, withIds, std::true_type{});
+    };
     if (anyFrozen) {
-        if (ids) fill(std::true_type{}, std::true_type{});
-        else fill(std::true_type{}, std::false_type{});
+        if (ids) withForces(std::true_type{}, std::true_type{});
+        else withForces(std::true_type{}, std::false_type{});
     } else {
-        if (ids) fill(std::false_type{}, std::true_type{});
-        else fill(std::false_type{}, std::false_type{});
+        if (ids) withForces(std::false_type{}, std::true_type{});
+        else withForces(std::false_type{}, std::false_type{});
     }
 }
 

@@ -48,9 +48,10 @@ void fillPairInputs(const Particles& p, const CellList& cells, bool velocities, 
 // The velocities of `in` as v + shift f (shift 0 for the particles of species marked frozen, when
 // frozenOfSpecies is not null): Groot and Warren's predictor, for particles in the cell list's order.
 // v + shift f is rounded to single precision from the double value. With `ids` the ids too, in the
-// same pass (each entry written whole).
-void fillPredictedVelocities(const Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies, bool ids,
-                             PairInputs& in);
+// same pass (each entry written whole). With forceOrder the forces are still in the order before the
+// last sort (SortForces::Leave): particle k's force is f[forceOrder[k]].
+void fillPredictedVelocities(const Particles& p, double shift, const std::vector<std::uint8_t>* frozenOfSpecies,
+                             const std::uint32_t* forceOrder, bool ids, PairInputs& in);
 
 // The pair loop's inputs: one set per process, refilled by every pair loop (which runs one at a time).
 PairInputs& sharedPairInputs();

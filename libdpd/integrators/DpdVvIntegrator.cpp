@@ -12,7 +12,7 @@ WallCounters DpdVvIntegrator::step(System& sys) {
     const double halfDt = 0.5 * sys.dt();
     const long n = static_cast<long>(p.size());
     halfKickAndDrift(sys);
-    const WallCounters walls = endMove(sys);
+    const WallCounters walls = endMove(sys, SortForces::Leave);  // the forces are computed anew
     sys.computeForces();
     // Second half kick; keep v(t+dt) and f' aside, and put the velocity change dt f' / 2 in the
     // particles' velocities (zero for frozen particles, whose velocity never changes) so that one

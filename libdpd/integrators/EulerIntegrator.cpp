@@ -8,7 +8,7 @@ namespace dpd {
 WallCounters EulerIntegrator::step(System& sys) {
     drift(sys);            // positions with the old velocities,
     kick(sys, sys.dt());   // velocities with the old forces
-    const WallCounters walls = endMove(sys);
+    const WallCounters walls = endMove(sys, SortForces::Leave);  // the forces are computed anew
     sys.computeForces();
     sys.completeWalls();
     return walls;

@@ -12,7 +12,9 @@ WallCounters ShardlowIntegrator::step(System& sys) {
     const double dt = sys.dt();
     shardlowSweep(sys, dt, 0);
     halfKickAndDrift(sys);
-    const WallCounters walls = endMove(sys);
+    // Its conservative forces are cleared and made again, but not by System::computeForces, the one
+    // that takes back forces a sort left behind: they are moved.
+    const WallCounters walls = endMove(sys, SortForces::Move);
     computeConservativeForces(sys);
     kick(sys, 0.5 * dt);
     forcesStep_ = sys.step;

@@ -1,5 +1,6 @@
 #pragma once
 // The parts the integrators' steps are made of.
+#include "neighbour/CellList.hpp"
 #include "walls/WallSet.hpp"
 
 namespace dpd {
@@ -16,8 +17,9 @@ void drift(System& sys);
 void halfKickAndDrift(System& sys);
 
 // After the particles moved: the clock moves on one step, walls reflect the particles that crossed
-// them, positions are wrapped into the box and the particles sorted by cell, ready for new forces.
-// Returns what the walls did.
-WallCounters endMove(System& sys);
+// them, positions are wrapped into the box and the particles sorted by cell, ready for new forces;
+// the sort moves the forces along, or leaves them behind for a step whose System::computeForces()
+// writes over them (System::sortByCell). Returns what the walls did.
+WallCounters endMove(System& sys, SortForces forces);
 
 }  // namespace dpd

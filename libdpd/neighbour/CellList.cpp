@@ -31,17 +31,17 @@ void CellList::setup(const Box& box, double cutoff) {
     start_.assign(2 * static_cast<std::size_t>(numCells()) + 1, 0);
 }
 
-void CellList::sortParticles(Particles& p) {
+void CellList::sortParticles(Particles& p, SortForces forces) {
     frozenOfSpecies_.clear();
-    sort(p);
+    sort(p, forces);
 }
 
-void CellList::sortParticles(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies) {
+void CellList::sortParticles(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies, SortForces forces) {
     frozenOfSpecies_ = frozenOfSpecies;
     // No frozen species: the plain sort, and the pair loop need not look for frozen parts.
     if (std::none_of(frozenOfSpecies_.begin(), frozenOfSpecies_.end(), [](std::uint8_t f) { return f != 0; }))
         frozenOfSpecies_.clear();
-    sort(p);
+    sort(p, forces);
 }
 
 // The three components of a vector field moved in one pass: each step of the loop reads order_ once
@@ -83,7 +83,7 @@ void CellList::gatherIdentity(Particles& p) {
     { p.id.swap(idScratch_); p.species.swap(speciesScratch_); }
 }
 
-void CellList::sort(Particles& p) {
+void CellList::sort(Particles& p, SortForces forces) {
     const long n = static_cast<long>(p.size());
     keyOf_.resize(n);
     order_.resize(n);
@@ -117,7 +117,7 @@ void CellList::sort(Particles& p) {
     {
         gatherVector(p.rx, p.ry, p.rz);
         gatherVector(p.vx, p.vy, p.vz);
-        gatherVector(p.fx, p.fy, p.fz);
+        if (forces == SortForces::Move) gatherVector(p.fx, p.fy, p.fz);
         gatherIdentity(p);
     }
 }

@@ -74,9 +74,13 @@ void System::wrapPositions() {
     for (long i = 0; i < n; ++i) box.wrapPoint(particles.rx[i], particles.ry[i], particles.rz[i]);
 }
 
-void System::sortByCell() {
+void System::sortByCell(SortForces forces) {
     const ScopedTimer timer(stepTimes ? &stepTimes->sort : nullptr);
-    cells_.sortParticles(particles, frozenOfSpecies_);
+    // A second sort would have to compose the two orders to find the forces again.
+    if (forces == SortForces::Leave && forcesLeftBySort_)
+        throw std::logic_error("System::sortByCell: the forces the last sort left behind were never computed again");
+    cells_.sortParticles(particles, frozenOfSpecies_, forces);
+    forcesLeftBySort_ = forces == SortForces::Leave;
 }
 
 void System::computeForces() { computeForces(0.0); }
@@ -88,9 +92,11 @@ void System::computeForces(double predictorShift) {
     const ScopedTimer timer(stepTimes ? &stepTimes->forces : nullptr);
     // The pair loop writes its forces over the old ones (with a predictor after reading them): no
     // pass clearing them first. The other forces are added to them.
-    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step), {predictorShift, &frozenOfSpecies_},
-                              true};
+    const std::uint32_t* forceOrder = forcesLeftBySort_ ? cells_.order().data() : nullptr;
+    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step),
+                              {predictorShift, &frozenOfSpecies_, forceOrder}, true};
     pairKernel_(particles, ctx, forceParameters);
+    forcesLeftBySort_ = false;  // written over by the pair forces
     bodyForce.apply(particles, frozenOfSpecies_, box);
     if (tunableSlipWalls_)
         walls.addTunableSlipForces(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),

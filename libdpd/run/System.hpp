@@ -62,8 +62,11 @@ public:
     // Brings every position back into the box.
     void wrapPositions();
     // Brings every position back into the box and reorders the particles by cell (call after moving,
-    // before computing forces).
-    void sortByCell();
+    // before computing forces). With SortForces::Leave the forces stay in the order before the sort,
+    // for an integrator whose next computeForces() writes over them (a predictor reads them through
+    // the sort's order); until then they belong to no particle in particular. Throws
+    // std::logic_error for a second Leave before the forces were computed again.
+    void sortByCell(SortForces forces = SortForces::Move);
     // Forces at the current positions and velocities: pair forces (keyed to the current step's random
     // numbers) plus the body force, plus the forces of tunable-slip walls when there are any. Requires sortByCell() since the last move.
     void computeForces();
@@ -101,6 +104,7 @@ private:
     bool conservative_ = true;
     bool tunableSlipWalls_ = false;  // some wall acts on the fluid with tunable-slip forces
     bool initialised_ = false;
+    bool forcesLeftBySort_ = false;  // the last sort left the forces behind (SortForces::Leave)
 };
 
 }  // namespace dpd
