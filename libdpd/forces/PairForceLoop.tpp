@@ -323,7 +323,9 @@ void accumulatePairForces(Particles& p, const PairLoopContext& ctx, const Evalua
     const bool predict = ctx.predictor.shift != 0.0;
     // The predicted velocities and the ids in one pass before the fill, which then leaves them.
     const bool predictedFill = predict && kVelocity;
-    if (predictedFill) fillPredictedVelocities(p, ctx.predictor.shift, ctx.predictor.frozenOfSpecies, ctx.predictor.forceOrder, kRandom, in);
+    if (predictedFill)
+        fillPredictedVelocities(p, ctx.predictor.shift, ctx.predictor.frozenOfSpecies, ctx.predictor.forceOrder, kRandom,
+                                in);
     PairForceSums& sums = sharedPairForceSums();
     ForceSum* sum = sums.prepare(p.size());
     const auto rows = [&](auto common) {
