@@ -6,9 +6,15 @@
 
 #include <omp.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
+#include <fstream>
+#include <limits>
+#include <string>
 
 namespace dpd {
 
@@ -24,6 +30,18 @@ double processCpuSeconds() {
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// CPU time stolen from this virtual machine so far, summed over its CPUs, in seconds: the eighth
+// number of /proc/stat's "cpu" line, in clock ticks. NaN where there is no such line.
+double stolenCpuSeconds() {
+    std::ifstream stat("/proc/stat");
+    std::string label;
+    double ticks[8];
+    if (!(stat >> label) || label != "cpu") return std::numeric_limits<double>::quiet_NaN();
+    for (double& t : ticks)
+        if (!(stat >> t)) return std::numeric_limits<double>::quiet_NaN();
+    return ticks[7] / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
 template <class T>
 std::size_t capacityBytes(const std::vector<T>& v) {
     return v.capacity() * sizeof(T);
@@ -36,7 +54,7 @@ std::size_t particleBytes(const Particles& p) {
 }
 
 struct Segment {
-    double wall = 0.0, cpu = 0.0, sampling = 0.0;
+    double wall = 0.0, cpu = 0.0, sampling = 0.0, stolen = 0.0;
     StepTimes parts;
 };
 
@@ -44,6 +62,7 @@ Segment runSegment(System& sys, GrootWarrenIntegrator& integrator, FunctionObjec
     Segment s;
     sys.stepTimes = &s.parts;
     const double cpu0 = processCpuSeconds();
+    const double stolen0 = stolenCpuSeconds();
     const auto t0 = Clock::now();
     for (int k = 0; k < steps; ++k) {
         integrator.step(sys);
@@ -53,6 +72,7 @@ Segment runSegment(System& sys, GrootWarrenIntegrator& integrator, FunctionObjec
     }
     s.wall = seconds(t0);
     s.cpu = processCpuSeconds() - cpu0;
+    s.stolen = stolenCpuSeconds() - stolen0;
     sys.stepTimes = nullptr;
     return s;
 }
@@ -84,6 +104,7 @@ BenchmarkResult timeScene(const BenchmarkScene& scene, int threads, const Benchm
     r.rate = particleSteps / best.wall;
     r.cpuRate = particleSteps * threads / leastCpu.cpu;
     r.spread = worst.wall / best.wall - 1.0;
+    r.steal = best.stolen / (best.wall * threads);
     r.msPerStep = 1e3 * best.wall / settings.steps;
     r.pairs = best.parts.forces / best.wall;
     r.neighbours = (best.parts.wrap + best.parts.sort) / best.wall;

@@ -24,6 +24,11 @@ struct BenchmarkResult {
     double rate = 0.0;        // particle-steps per second, best segment, wall clock
     double cpuRate = 0.0;     // particle-steps per second of CPU time x threads, segment of least CPU time
     double spread = 0.0;      // worst segment time / best segment time - 1
+    // Of the best segment's wall time x threads, the share the hypervisor gave to other guests while
+    // this machine's CPUs wanted it ("steal" in /proc/stat, all CPUs): a shared virtual machine's
+    // figures are low by about that much, and more (other guests share the caches and memory too).
+    // NaN where the kernel does not say.
+    double steal = 0.0;
     double msPerStep = 0.0;   // best segment
     // Fractions of the best segment's time.
     double pairs = 0.0, neighbours = 0.0, walls = 0.0, integration = 0.0, sampling = 0.0;

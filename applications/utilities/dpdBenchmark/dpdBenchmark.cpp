@@ -49,15 +49,16 @@ std::vector<std::string> parseScenes(const std::string& text) {
 
 std::string tableHeader() {
     return "# dpdBenchmark: particle-steps/s (best of the timed segments), fractions of the step by phase, bytes\n"
-           "# per particle. rate: wall clock; cpuRate: per CPU second x threads; spread: worst/best segment - 1.\n"
-           "# scene    particles threads  rate       cpuRate    spread  ms/step   pairs neighb walls  integ  sampl  bytes/p  kT\n";
+           "# per particle. rate: wall clock; cpuRate: per CPU second x threads; spread: worst/best segment - 1;\n"
+           "# steal: share of the best segment's CPU time the hypervisor gave to other guests (shared machine).\n"
+           "# scene    particles threads  rate       cpuRate    spread  steal   ms/step   pairs neighb walls  integ  sampl  bytes/p  kT\n";
 }
 
 std::string tableRow(const dpd::BenchmarkResult& r) {
     char line[256];
     std::snprintf(line, sizeof line,
-                  "%-9s %9zu %7d  %9.3e  %9.3e  %6.3f  %8.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %7.1f  %.3f\n",
-                  r.scene.c_str(), r.particles, r.threads, r.rate, r.cpuRate, r.spread, r.msPerStep, r.pairs,
+                  "%-9s %9zu %7d  %9.3e  %9.3e  %6.3f  %6.3f  %8.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %7.1f  %.3f\n",
+                  r.scene.c_str(), r.particles, r.threads, r.rate, r.cpuRate, r.spread, r.steal, r.msPerStep, r.pairs,
                   r.neighbours, r.walls, r.integration, r.sampling, r.bytesPerParticle, r.kT);
     return line;
 }
