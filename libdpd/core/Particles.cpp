@@ -3,8 +3,8 @@
 namespace dpd {
 
 namespace {
-template <class T>
-void permuteArray(std::vector<T>& a, const std::vector<std::uint32_t>& order, std::vector<T>& scratch) {
+template <class Array>
+void permuteArray(Array& a, const std::vector<std::uint32_t>& order, Array& scratch) {
     scratch.resize(a.size());
     for (std::size_t k = 0; k < order.size(); ++k) scratch[k] = a[order[k]];
     a.swap(scratch);
@@ -33,11 +33,11 @@ void Particles::add(std::uint64_t particleId, int speciesIndex, double x, double
 }
 
 void Particles::permute(const std::vector<std::uint32_t>& order) {
-    std::vector<double> scratch;
+    ParticleArray<double> scratch;
     for (auto* a : {&rx, &ry, &rz, &vx, &vy, &vz, &fx, &fy, &fz}) permuteArray(*a, order, scratch);
-    std::vector<std::uint64_t> idScratch;
+    ParticleArray<std::uint64_t> idScratch;
     permuteArray(id, order, idScratch);
-    std::vector<std::uint8_t> speciesScratch;
+    ParticleArray<std::uint8_t> speciesScratch;
     permuteArray(species, order, speciesScratch);
 }
 

@@ -1,21 +1,23 @@
 #pragma once
 // Particles as a structure of arrays: each component is contiguous, so the pair loop and the
 // integrators stream through memory and the compiler can vectorise them.
+#include "core/HugePageAllocator.hpp"
+
 #include <cstdint>
 #include <vector>
 
 namespace dpd {
 
 struct Particles {
-    std::vector<double> rx, ry, rz;  // positions
-    std::vector<double> vx, vy, vz;  // velocities
-    std::vector<double> fx, fy, fz;  // forces (per unit mass: all masses are 1)
-    std::vector<std::uint64_t> id;   // permanent identity: keys the random numbers, survives sorting
-    std::vector<std::uint8_t> species;
+    ParticleArray<double> rx, ry, rz;  // positions
+    ParticleArray<double> vx, vy, vz;  // velocities
+    ParticleArray<double> fx, fy, fz;  // forces (per unit mass: all masses are 1)
+    ParticleArray<std::uint64_t> id;   // permanent identity: keys the random numbers, survives sorting
+    ParticleArray<std::uint8_t> species;
 
     std::size_t size() const { return id.size(); }
     // The positions along one axis (0 x, 1 y, 2 z).
-    const std::vector<double>& position(int axis) const { return axis == 0 ? rx : (axis == 1 ? ry : rz); }
+    const ParticleArray<double>& position(int axis) const { return axis == 0 ? rx : (axis == 1 ? ry : rz); }
     void resize(std::size_t n);
     void reserve(std::size_t n);
     void add(std::uint64_t particleId, int speciesIndex, double x, double y, double z,

@@ -8,9 +8,9 @@
 namespace dpd {
 
 // n entries, and no more than twice that held. Entries added are value-initialised.
-template <class T>
-void fitTo(std::vector<T>& v, std::size_t n) {
-    if (v.capacity() > 2 * n) std::vector<T>().swap(v);
+template <class T, class Allocator>
+void fitTo(std::vector<T, Allocator>& v, std::size_t n) {
+    if (v.capacity() > 2 * n) std::vector<T, Allocator>().swap(v);
     v.resize(n);
 }
 

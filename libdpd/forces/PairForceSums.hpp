@@ -27,7 +27,7 @@ public:
     std::size_t capacityBytes() const { return sums_.capacity() * sizeof(ForceSum); }
 
 private:
-    std::vector<ForceSum> sums_;
+    ParticleArray<ForceSum> sums_;
 };
 
 // The pair loop's sums: one set per process (pair loops run one at a time).

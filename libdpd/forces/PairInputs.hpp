@@ -35,8 +35,8 @@ struct alignas(16) PairKinematics {
 inline constexpr std::size_t kPairInputPadding = 7;
 
 struct PairInputs {
-    std::vector<float> x, y, z;           // r - (lower corner of the particle's cell), then the padding
-    std::vector<PairKinematics> kinematics;  // velocities and ids, each filled only when asked for
+    ParticleArray<float> x, y, z;           // r - (lower corner of the particle's cell), then the padding
+    ParticleArray<PairKinematics> kinematics;  // velocities and ids, each filled only when asked for
     float cellX = 1.0f, cellY = 1.0f, cellZ = 1.0f;  // the cell size
 
     std::size_t capacityBytes() const;

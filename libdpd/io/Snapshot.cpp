@@ -32,8 +32,8 @@ const std::string connectivityName = "xdmf/connectivity";
 
 // The arrays of a Particles are separate (structure of arrays); the file stores rows (x, y, z),
 // which is what ParaView's XYZ geometry and numpy users expect.
-std::vector<double> interleave(const std::vector<double>& x, const std::vector<double>& y,
-                               const std::vector<double>& z) {
+std::vector<double> interleave(const ParticleArray<double>& x, const ParticleArray<double>& y,
+                               const ParticleArray<double>& z) {
     std::vector<double> xyz(3 * x.size());
     for (std::size_t i = 0; i < x.size(); ++i) {
         xyz[3 * i] = x[i];
@@ -53,7 +53,7 @@ void requireLength(std::size_t length, std::size_t n, const char* what) {
 void checkConsistent(const Snapshot& s) {
     const Particles& p = s.particles;
     const std::size_t n = p.size();
-    const std::vector<std::pair<const std::vector<double>*, const char*>> columns = {
+    const std::vector<std::pair<const ParticleArray<double>*, const char*>> columns = {
         {&p.rx, "rx"}, {&p.ry, "ry"}, {&p.rz, "rz"}, {&p.vx, "vx"}, {&p.vy, "vy"},
         {&p.vz, "vz"}, {&p.fx, "fx"}, {&p.fy, "fy"}, {&p.fz, "fz"}};
     for (const auto& [column, name] : columns) requireLength(column->size(), n, name);
@@ -73,7 +73,7 @@ void writeParticleData(Hdf5Writer& file, const Particles& p) {
     file.writeDoubles(positionName, interleave(p.rx, p.ry, p.rz), {n, 3});
     file.writeDoubles(velocityName, interleave(p.vx, p.vy, p.vz), {n, 3});
     file.writeDoubles(forceName, interleave(p.fx, p.fy, p.fz), {n, 3});
-    file.writeUInt64(idName, p.id);
+    file.writeUInt64(idName, std::vector<std::uint64_t>(p.id.begin(), p.id.end()));
     file.writeInt32(speciesName, std::vector<std::int32_t>(p.species.begin(), p.species.end()));
 }
 
@@ -238,8 +238,8 @@ void readSpecies(const Hdf5Reader& file, Snapshot& s) {
     for (double f : frozen) s.speciesFrozen.push_back(f != 0.0);
 }
 
-void splitRows(const std::vector<double>& xyz, std::vector<double>& x, std::vector<double>& y,
-               std::vector<double>& z) {
+void splitRows(const std::vector<double>& xyz, ParticleArray<double>& x, ParticleArray<double>& y,
+               ParticleArray<double>& z) {
     const std::size_t n = xyz.size() / 3;
     x.resize(n);
     y.resize(n);
@@ -252,8 +252,8 @@ void splitRows(const std::vector<double>& xyz, std::vector<double>& x, std::vect
 }
 
 // Reads one (n, 3) dataset into three columns.
-void readRows(const Hdf5Reader& file, const std::string& name, std::size_t n, std::vector<double>& x,
-              std::vector<double>& y, std::vector<double>& z) {
+void readRows(const Hdf5Reader& file, const std::string& name, std::size_t n, ParticleArray<double>& x,
+              ParticleArray<double>& y, ParticleArray<double>& z) {
     std::vector<hsize_t> dims;
     const std::vector<double> xyz = file.readDoubles(name, &dims);
     requireShape(file, name, dims, {static_cast<hsize_t>(n), 3});
@@ -285,7 +285,8 @@ void readParticles(const Hdf5Reader& file, std::size_t nSpecies, Particles& p) {
     splitRows(position, p.rx, p.ry, p.rz);
     readRows(file, velocityName, n, p.vx, p.vy, p.vz);
     readRows(file, forceName, n, p.fx, p.fy, p.fz);
-    p.id = file.readUInt64(idName, &dims);
+    const std::vector<std::uint64_t> ids = file.readUInt64(idName, &dims);
+    p.id.assign(ids.begin(), ids.end());
     requireShape(file, idName, dims, {static_cast<hsize_t>(n)});
     readSpeciesIndices(file, n, nSpecies, p);
 }

@@ -39,7 +39,7 @@ public:
     void sortParticles(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies,
                        SortForces forces = SortForces::Move);
     // The last sort's permutation: particle k of the sorted arrays was particle order()[k] before it.
-    const std::vector<std::uint32_t>& order() const { return order_; }
+    const ParticleArray<std::uint32_t>& order() const { return order_; }
 
     const std::array<int, 3>& cellsPerAxis() const { return n_; }
     int cellIndex(int ix, int iy, int iz) const { return (ix * n_[1] + iy) * n_[2] + iz; }
@@ -70,7 +70,7 @@ private:
     // start_ and order_ from keyOf_ (a stable counting sort, in parallel).
     void countingSort();
     // The particle arrays put in order_ (inside a parallel region).
-    void gatherVector(std::vector<double>& x, std::vector<double>& y, std::vector<double>& z);
+    void gatherVector(ParticleArray<double>& x, ParticleArray<double>& y, ParticleArray<double>& z);
     void gatherIdentity(Particles& p);
 
     Box box_;
@@ -81,10 +81,10 @@ private:
     std::vector<std::uint32_t> start_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     // Kept between sorts, so a step allocates nothing.
-    std::vector<std::uint32_t> keyOf_, order_, fill_;
-    std::array<std::vector<double>, 3> scratch_;
-    std::vector<std::uint64_t> idScratch_;
-    std::vector<std::uint8_t> speciesScratch_;
+    ParticleArray<std::uint32_t> keyOf_, order_, fill_;
+    std::array<ParticleArray<double>, 3> scratch_;
+    ParticleArray<std::uint64_t> idScratch_;
+    ParticleArray<std::uint8_t> speciesScratch_;
 };
 
 }  // namespace dpd

@@ -105,7 +105,7 @@ InitialFlow readInitialFlow(const Dictionary& fluidDict, const DpdModel& model, 
 
 void addInitialFlow(Particles& p, std::size_t begin, std::size_t end, const InitialFlow& flow) {
     if (flow.type == InitialFlow::Type::none) return;
-    const std::vector<double>& coordinate = p.position(flow.axis);
+    const ParticleArray<double>& coordinate = p.position(flow.axis);
     for (std::size_t i = begin; i < end; ++i) {
         const Eigen::Vector3d u = flow.velocityAt(coordinate[i]);
         p.vx[i] += u.x();

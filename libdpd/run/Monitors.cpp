@@ -17,7 +17,7 @@ int slabCount(const System& sys, int flowAxis) {
 
 int slabOf(const System& sys, int flowAxis, int nSlabs, std::size_t i) {
     if (flowAxis < 0) return 0;
-    const std::vector<double>& r = sys.particles.position(flowAxis);
+    const ParticleArray<double>& r = sys.particles.position(flowAxis);
     const double u = (r[i] - sys.box.lo[flowAxis]) / sys.box.length()[flowAxis];
     return std::min(nSlabs - 1, std::max(0, static_cast<int>(u * nSlabs)));
 }

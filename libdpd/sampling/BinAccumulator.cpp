@@ -41,8 +41,8 @@ std::size_t sampleRanges(std::size_t particles, std::size_t bins) {
 }  // namespace
 
 void BinAccumulator::addParticles(const Particles& p, std::size_t begin, std::size_t end, BinSums* bins) const {
-    const std::vector<double>& r = p.position(layout_.axis);
-    const std::vector<double>& r2 = p.position(layout_.twoAxes() ? layout_.axis2 : layout_.axis);
+    const ParticleArray<double>& r = p.position(layout_.axis);
+    const ParticleArray<double>& r2 = p.position(layout_.twoAxes() ? layout_.axis2 : layout_.axis);
     for (std::size_t i = begin; i < end; ++i) {
         if (!speciesMask_[p.species[i]]) continue;
         const int b = layout_.binOf(r[i]);

@@ -57,8 +57,8 @@ void expectIoError(F&& f, const std::vector<std::string>& fragments) {
     }
 }
 
-template <class T>
-bool bitIdentical(const std::vector<T>& a, const std::vector<T>& b) {
+template <class T, class Allocator>
+bool bitIdentical(const std::vector<T, Allocator>& a, const std::vector<T, Allocator>& b) {
     return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 

@@ -475,7 +475,7 @@ TEST(CellList, ReplacingForcesWritesThePairForcesOverWhatTheParticlesHeld) {
 
     p.clearForces();
     accumulatePairForces(p, ctx, eval, 1.0);
-    const std::vector<double> added = p.fx;
+    const ParticleArray<double> added = p.fx;
     for (std::size_t k = 0; k < n; ++k) { p.fx[k] = 1e3 + k; p.fy[k] = -7.0; p.fz[k] = 0.5; }
     ctx.replaceForces = true;
     accumulatePairForces(p, ctx, eval, 1.0);
@@ -516,7 +516,7 @@ SortedBothWays sortedBothWays(std::uint64_t seed) {
 }
 
 // How many particles the sort took from another place (a test of the order means something only if many).
-std::size_t displaced(const std::vector<std::uint32_t>& order) {
+std::size_t displaced(const ParticleArray<std::uint32_t>& order) {
     std::size_t count = 0;
     for (std::size_t k = 0; k < order.size(); ++k) count += order[k] != k;
     return count;
@@ -531,7 +531,7 @@ TEST(CellList, ASortThatLeavesTheForcesBehindMovesAllElseAndItsOrderFindsThem) {
     EXPECT_EQ(left.rx, moved.rx); EXPECT_EQ(left.vy, moved.vy); EXPECT_EQ(left.species, moved.species);
     // The forces stayed where they were; the order finds each particle's own.
     EXPECT_EQ(left.fx, before.fx); EXPECT_EQ(left.fz, before.fz);
-    const std::vector<std::uint32_t>& order = s.leftCells.order();
+    const ParticleArray<std::uint32_t>& order = s.leftCells.order();
     ASSERT_EQ(order.size(), left.size());
     for (std::size_t k = 0; k < left.size(); ++k) {
         ASSERT_EQ(left.fx[order[k]], moved.fx[k]) << "particle " << k;

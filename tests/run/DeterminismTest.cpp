@@ -28,8 +28,8 @@ private:
     int saved_;
 };
 
-template <class T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+template <class T, class Allocator>
+bool sameBits(const std::vector<T, Allocator>& a, const std::vector<T, Allocator>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 

@@ -77,7 +77,7 @@ System channel(const TunableSlipParameters& t, double h, double lx, double densi
 }
 
 double kineticTemperature(const Particles& p, int axis) {
-    const std::vector<double>& v = axis == 0 ? p.vx : axis == 1 ? p.vy : p.vz;
+    const ParticleArray<double>& v = axis == 0 ? p.vx : axis == 1 ? p.vy : p.vz;
     double sum = 0.0;
     for (double x : v) sum += x * x;
     return sum / static_cast<double>(v.size());

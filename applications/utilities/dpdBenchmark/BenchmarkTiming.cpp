@@ -42,8 +42,8 @@ double stolenCpuSeconds() {
     return ticks[7] / static_cast<double>(sysconf(_SC_CLK_TCK));
 }
 
-template <class T>
-std::size_t capacityBytes(const std::vector<T>& v) {
+template <class T, class Allocator>
+std::size_t capacityBytes(const std::vector<T, Allocator>& v) {
     return v.capacity() * sizeof(T);
 }
 
