@@ -51,7 +51,6 @@ struct RuleCounts {
     long reflected = 0, crossed = 0;
 };
 
-
 // A bounce-layer wall on mobile particle i: in the layer and moving towards the solid, it is turned
 // round; behind the plane, mirrored back, turned round and counted as a crossing.
 void bounceLayerParticle(const PlanarWall& w, Particles& p, std::size_t i, const Box& box, const PairRandom& random,
