@@ -72,12 +72,18 @@ void CellList::gatherIdentity(Particles& p) {
     const long n = static_cast<long>(order_.size());
 #pragma omp single
     { idScratch_.resize(p.id.size()); speciesScratch_.resize(p.species.size()); }
+    // Raw pointers: through the vectors, every store could alias their data pointers, which the loop
+    // then reloaded for each element.
     const std::uint32_t* __restrict order = order_.data();
+    const std::uint64_t* __restrict id = p.id.data();
+    const std::uint8_t* __restrict species = p.species.data();
+    std::uint64_t* __restrict idTo = idScratch_.data();
+    std::uint8_t* __restrict speciesTo = speciesScratch_.data();
 #pragma omp for schedule(static)
     for (long k = 0; k < n; ++k) {
         const std::uint32_t o = order[k];
-        idScratch_[k] = p.id[o];
-        speciesScratch_[k] = p.species[o];
+        idTo[k] = id[o];
+        speciesTo[k] = species[o];
     }
 #pragma omp single
     { p.id.swap(idScratch_); p.species.swap(speciesScratch_); }
