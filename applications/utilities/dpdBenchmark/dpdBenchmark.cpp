@@ -11,6 +11,7 @@
 #include <boost/program_options.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -47,10 +48,19 @@ std::vector<std::string> parseScenes(const std::string& text) {
     return scenes;
 }
 
+// How idle OpenMP threads wait at barriers changes the two-thread rates by ~10 % on a shared machine
+// (passive: they sleep, and each barrier pays a wake-up), so the table says which policy it ran under.
+std::string waitPolicyLine() {
+    const char* policy = std::getenv("OMP_WAIT_POLICY");
+    return std::string("# OMP_WAIT_POLICY: ") +
+           (policy && *policy ? policy : "unset (libgomp's default: spin a while at a barrier, then sleep)") + "\n";
+}
+
 std::string tableHeader() {
     return "# dpdBenchmark: particle-steps/s (best of the timed segments), fractions of the step by phase, bytes\n"
            "# per particle. rate: wall clock; cpuRate: per CPU second x threads; spread: worst/best segment - 1;\n"
-           "# steal: share of the best segment's CPU time the hypervisor gave to other guests (shared machine).\n"
+           "# steal: share of the best segment's CPU time the hypervisor gave to other guests (shared machine).\n" +
+           waitPolicyLine() +
            "# scene    particles threads  rate       cpuRate    spread  steal   ms/step   pairs neighb walls  integ  sampl  bytes/p  kT\n";
 }
 
