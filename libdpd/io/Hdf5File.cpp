@@ -151,7 +151,12 @@ void Hdf5Writer::writeDoubles(const std::string& name, const std::vector<double>
 
 void Hdf5Writer::writeUInt64(const std::string& name, const std::vector<std::uint64_t>& data,
                              std::vector<hsize_t> dims) {
-    writeDataset(name, H5T_NATIVE_UINT64, H5T_STD_U64LE, data.data(), data.size(), std::move(dims));
+    writeUInt64(name, data.data(), data.size(), std::move(dims));
+}
+
+void Hdf5Writer::writeUInt64(const std::string& name, const std::uint64_t* data, std::size_t count,
+                             std::vector<hsize_t> dims) {
+    writeDataset(name, H5T_NATIVE_UINT64, H5T_STD_U64LE, data, count, std::move(dims));
 }
 
 void Hdf5Writer::writeInt64(const std::string& name, const std::vector<std::int64_t>& data,

@@ -13,6 +13,7 @@
 // groups. Attributes hang on an object path, "/" being the root group.
 #include <hdf5.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -57,6 +58,9 @@ public:
     // (std::invalid_argument). Data are row-major, as numpy and h5py expect.
     void writeDoubles(const std::string& name, const std::vector<double>& data, std::vector<hsize_t> dims = {});
     void writeUInt64(const std::string& name, const std::vector<std::uint64_t>& data, std::vector<hsize_t> dims = {});
+    // The same from `count` values at `data`, for arrays held otherwise (the particles' ids, in
+    // huge-page vectors), without a copy.
+    void writeUInt64(const std::string& name, const std::uint64_t* data, std::size_t count, std::vector<hsize_t> dims = {});
     void writeInt64(const std::string& name, const std::vector<std::int64_t>& data, std::vector<hsize_t> dims = {});
     void writeInt32(const std::string& name, const std::vector<std::int32_t>& data, std::vector<hsize_t> dims = {});
     void writeUInt8(const std::string& name, const std::vector<std::uint8_t>& data, std::vector<hsize_t> dims = {});

@@ -73,7 +73,7 @@ void writeParticleData(Hdf5Writer& file, const Particles& p) {
     file.writeDoubles(positionName, interleave(p.rx, p.ry, p.rz), {n, 3});
     file.writeDoubles(velocityName, interleave(p.vx, p.vy, p.vz), {n, 3});
     file.writeDoubles(forceName, interleave(p.fx, p.fy, p.fz), {n, 3});
-    file.writeUInt64(idName, std::vector<std::uint64_t>(p.id.begin(), p.id.end()));
+    file.writeUInt64(idName, p.id.data(), p.id.size());
     file.writeInt32(speciesName, std::vector<std::int32_t>(p.species.begin(), p.species.end()));
 }
 
