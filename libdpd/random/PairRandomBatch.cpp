@@ -32,35 +32,61 @@ inline __m256i mulHi(__m256i a, __m256i m) {
     return _mm256_blend_epi32(_mm256_srli_epi64(even, 32), odd, 0xAA);
 }
 
-// Word 0 of Philox4x32-10 for the eight counters (lo, hi, s0, s1) under one key.
-inline __m256i philoxFirstWord(__m256i lo, __m256i hi, std::uint32_t s0, std::uint32_t s1, PhiloxKey key) {
+// Word 0 of Philox4x32-10 for G groups of eight counters (lo, hi, s0, s1) under one key. The groups
+// go through each round together: a round's products take ~7 cycles one after the other, and a
+// group's ~160 instructions nearly fill the out-of-order window, so one group at a time left the
+// multipliers idle. Two groups side by side: the generator's share of a step (fluid, 256,000
+// particles, one thread) 10.6 -> 8.4 %; four: no better.
+template <int G>
+inline void philoxFirstWords(const __m256i (&lo)[G], const __m256i (&hi)[G], std::uint32_t s0, std::uint32_t s1,
+                             PhiloxKey key, __m256i (&word0)[G]) {
     const __m256i m0 = broadcast(kPhiloxM0), m1 = broadcast(kPhiloxM1);
     // Round 0: (c0, c1, c2, c3) = (lo, hi, s0, s1) becomes
     // (hi(M1 s0) ^ hi ^ k0, lo(M1 s0), hi(M0 lo) ^ s1 ^ k1, lo(M0 lo)).
     const std::uint64_t p = std::uint64_t{kPhiloxM1} * s0;
-    __m256i c0 = _mm256_xor_si256(hi, broadcast(static_cast<std::uint32_t>(p >> 32) ^ key[0]));
-    __m256i c1 = broadcast(static_cast<std::uint32_t>(p));
-    __m256i c2 = _mm256_xor_si256(mulHi(lo, m0), broadcast(s1 ^ key[1]));
-    __m256i c3 = _mm256_mullo_epi32(lo, m0);
+    const __m256i c1First = broadcast(static_cast<std::uint32_t>(p));
+    __m256i c0[G], c1[G], c2[G], c3[G];
+    for (int g = 0; g < G; ++g) {
+        c0[g] = _mm256_xor_si256(hi[g], broadcast(static_cast<std::uint32_t>(p >> 32) ^ key[0]));
+        c1[g] = c1First;
+        c2[g] = _mm256_xor_si256(mulHi(lo[g], m0), broadcast(s1 ^ key[1]));
+        c3[g] = _mm256_mullo_epi32(lo[g], m0);
+    }
     for (int round = 1; round < 8; ++round) {
         key[0] += kPhiloxW0;
         key[1] += kPhiloxW1;
-        const __m256i hi0 = mulHi(c0, m0), lo0 = _mm256_mullo_epi32(c0, m0);
-        const __m256i hi1 = mulHi(c2, m1), lo1 = _mm256_mullo_epi32(c2, m1);
-        c0 = xor3(hi1, c1, broadcast(key[0]));
-        c1 = lo1;
-        c2 = xor3(hi0, c3, broadcast(key[1]));
-        c3 = lo0;
+        for (int g = 0; g < G; ++g) {
+            const __m256i hi0 = mulHi(c0[g], m0), lo0 = _mm256_mullo_epi32(c0[g], m0);
+            const __m256i hi1 = mulHi(c2[g], m1), lo1 = _mm256_mullo_epi32(c2[g], m1);
+            c0[g] = xor3(hi1, c1[g], broadcast(key[0]));
+            c1[g] = lo1;
+            c2[g] = xor3(hi0, c3[g], broadcast(key[1]));
+            c3[g] = lo0;
+        }
     }
-    // Round 8: only the words round 9 reads, c1 and c2.
+    // Round 8: only the words round 9 reads, c1 and c2; round 9: word 0 alone.
     key[0] += kPhiloxW0;
     key[1] += kPhiloxW1;
-    const __m256i c1Last = _mm256_mullo_epi32(c2, m1);
-    const __m256i c2Last = xor3(mulHi(c0, m0), c3, broadcast(key[1]));
-    // Round 9: word 0 alone.
-    key[0] += kPhiloxW0;
-    return xor3(mulHi(c2Last, m1), c1Last, broadcast(key[0]));
+    const std::uint32_t lastKey0 = key[0] + kPhiloxW0;
+    for (int g = 0; g < G; ++g) {
+        const __m256i c1Last = _mm256_mullo_epi32(c2[g], m1);
+        const __m256i c2Last = xor3(mulHi(c0[g], m0), c3[g], broadcast(key[1]));
+        word0[g] = xor3(mulHi(c2Last, m1), c1Last, broadcast(lastKey0));
+    }
 }
+
+// ((int) (bits ^ 2^31) + 1/2) scale of eight words, as unitVarianceUniform (scale sqrt(12) 2^-32),
+// stored at zeta[0..7].
+inline void storeUnitVarianceUniforms(__m256i bits, __m256d scale, double* zeta) {
+    const __m256i centred = _mm256_xor_si256(bits, _mm256_set1_epi32(static_cast<int>(0x80000000u)));
+    const __m256d half = _mm256_set1_pd(0.5);
+    const __m256d low = _mm256_cvtepi32_pd(_mm256_castsi256_si128(centred));
+    const __m256d high = _mm256_cvtepi32_pd(_mm256_extracti128_si256(centred, 1));
+    _mm256_storeu_pd(zeta, _mm256_mul_pd(_mm256_add_pd(low, half), scale));
+    _mm256_storeu_pd(zeta + 4, _mm256_mul_pd(_mm256_add_pd(high, half), scale));
+}
+
+inline __m256i load8(const std::uint32_t* words) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(words)); }
 
 }  // namespace
 #endif
@@ -71,16 +97,19 @@ void PairRandom::orderedPairUniforms(std::uint64_t step, const std::uint32_t* lo
 #if defined(__AVX2__)
     const auto stepLo = static_cast<std::uint32_t>(step);
     const std::uint32_t stepHi = static_cast<std::uint32_t>(step >> 32) ^ kPairStream;
-    const __m256i signBit = _mm256_set1_epi32(static_cast<int>(0x80000000u));
-    const __m256d half = _mm256_set1_pd(0.5), scale = _mm256_set1_pd(kSqrt12 * 0x1p-32);
+    const __m256d scale = _mm256_set1_pd(kSqrt12 * 0x1p-32);
+    for (; k + 16 <= n; k += 16) {
+        const __m256i l[2] = {load8(lo + k), load8(lo + k + 8)}, h[2] = {load8(hi + k), load8(hi + k + 8)};
+        __m256i w[2];
+        philoxFirstWords<2>(l, h, stepLo, stepHi, key_, w);
+        storeUnitVarianceUniforms(w[0], scale, zeta + k);
+        storeUnitVarianceUniforms(w[1], scale, zeta + k + 8);
+    }
     for (; k + 8 <= n; k += 8) {
-        const __m256i c0 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(lo + k));
-        const __m256i c1 = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(hi + k));
-        const __m256i centred = _mm256_xor_si256(philoxFirstWord(c0, c1, stepLo, stepHi, key_), signBit);
-        const __m256d low = _mm256_cvtepi32_pd(_mm256_castsi256_si128(centred));
-        const __m256d high = _mm256_cvtepi32_pd(_mm256_extracti128_si256(centred, 1));
-        _mm256_storeu_pd(zeta + k, _mm256_mul_pd(_mm256_add_pd(low, half), scale));
-        _mm256_storeu_pd(zeta + k + 4, _mm256_mul_pd(_mm256_add_pd(high, half), scale));
+        const __m256i l[1] = {load8(lo + k)}, h[1] = {load8(hi + k)};
+        __m256i w[1];
+        philoxFirstWords<1>(l, h, stepLo, stepHi, key_, w);
+        storeUnitVarianceUniforms(w[0], scale, zeta + k);
     }
 #endif
     for (; k < n; ++k) zeta[k] = orderedPairUniform(step, lo[k], hi[k]);
