@@ -564,3 +564,36 @@ TEST(CellList, APredictorReadsForcesLeftBehindThroughTheSortsOrder) {
     }
     EXPECT_GT(displaced(s.leftCells.order()), left.size() / 2);
 }
+
+TEST(CellList, TheSortWrapsParticlesThatLeftTheBox) {
+    // 8 x 5 + 3 particles (five full blocks of the key pass and a tail), each moved out of the box
+    // across one face or none: the sort must bring every one back to its periodic image in the box,
+    // whichever block it is in and whichever axis it left along.
+    Box box;
+    box.lo = Eigen::Vector3d(-1.5, 0.0, 2.0);
+    box.hi = Eigen::Vector3d(2.5, 3.5, 6.0);
+    const Eigen::Vector3d L = box.length();
+    Particles p;
+    std::map<std::uint64_t, Eigen::Vector3d> inside;  // each particle's position in the box, by id
+    const int n = 43;
+    for (int k = 0; k < n; ++k) {
+        const Eigen::Vector3d r(box.lo.x() + L.x() * (k + 0.5) / n, box.lo.y() + L.y() * ((7 * k) % n + 0.5) / n,
+                                box.lo.z() + L.z() * ((11 * k) % n + 0.5) / n);
+        inside[k] = r;
+        Eigen::Vector3d moved = r;
+        // Particle k leaves along axis (k / 2) % 3, below for even k and above for odd, one block in
+        // seven not at all (a block with nobody outside must be left alone too).
+        if ((k / 8) % 7 != 3) moved[(k / 2) % 3] += (k % 2 == 0 ? -L[(k / 2) % 3] : L[(k / 2) % 3]);
+        p.add(k, 0, moved.x(), moved.y(), moved.z(), 0.0, 0.0, 0.0);
+    }
+    CellList cells;
+    cells.setup(box, 1.0);
+    cells.sortParticles(p);
+    ASSERT_EQ(p.size(), static_cast<std::size_t>(n));
+    for (std::size_t k = 0; k < p.size(); ++k) {
+        const Eigen::Vector3d& r = inside.at(p.id[k]);
+        EXPECT_NEAR(p.rx[k], r.x(), 1e-12) << "id " << p.id[k];
+        EXPECT_NEAR(p.ry[k], r.y(), 1e-12) << "id " << p.id[k];
+        EXPECT_NEAR(p.rz[k], r.z(), 1e-12) << "id " << p.id[k];
+    }
+}
