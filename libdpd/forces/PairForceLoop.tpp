@@ -137,9 +137,7 @@ inline std::size_t dropNonInteracting(const Particles& p, const PairLoopPlan& pl
 }
 
 // Pass 1: the pairs of home cell (ix, iy, iz) closer than the cutoff, appended to the batch
-// (PairSearch.hpp). Away from the z boundary the home column's runs, then the window of the row's
-// stage; at the boundary (where the window would wrap) every column's runs. With kFilter the pairs
-// of species that do not interact are dropped again.
+// (PairSearch.hpp). With kFilter the pairs of species that do not interact are dropped again.
 template <bool kFilter>
 inline void findCellPairs(const Particles& p, const PairInputs& in, const CellList& cl, const PairLoopPlan& plan,
                           const RowColumn* columns, int nColumns, const RowStage& stage, float cutoff2, int home, int iz,
@@ -147,13 +145,20 @@ inline void findCellPairs(const Particles& p, const PairInputs& in, const CellLi
     const std::uint32_t aBegin = cl.cellStart(home), aEnd = cl.cellStart(home + 1);
     if (aBegin == aEnd) return;
     const int nz = cl.cellsPerAxis()[2];
+    // Away from the ends of the column, the home column's two cells directly, the other columns
+    // through the row's stage; at the ends (where the window would wrap) every column's runs.
     const bool window = iz > 0 && iz < nz - 1;
+    const bool split = plan.skipFrozenPairs;
+    const std::uint32_t aMobileEnd = split ? cl.mobileEnd(home) : aEnd;
+    // (the cell above the home cell ends where the cell after it starts: inside the column only)
+    const std::uint32_t aboveEnd = window ? cl.cellStart(home + 2) : aEnd;
     NeighbourRun runs[40];
-    const int nRuns = neighbourRuns(cl, in, plan, columns, window ? 1 : nColumns, home, iz, runs);
+    const int nRuns = window ? 0 : neighbourRuns(cl, in, plan, columns, nColumns, home, iz, runs);
     std::size_t candidates = 0;
     for (int r = 0; r < nRuns; ++r)
         candidates += std::size_t(runs[r].jEnd - runs[r].jBegin) * (runs[r].iEnd - runs[r].iBegin);
-    if (window) candidates += std::size_t(stage.levelStart[iz + 2] - stage.levelStart[iz - 1]) * (aEnd - aBegin);
+    if (window)
+        candidates += std::size_t(stage.levelStart[iz + 2] - stage.levelStart[iz - 1] + aboveEnd - aBegin) * (aEnd - aBegin);
     batch.reserveMore(candidates + 8);
     const PairSearchInput search{in.x.data(), in.y.data(), in.z.data(), in.cellZ, cutoff2};
     const PairSearchOutput out{batch.i, batch.j, batch.dx, batch.dy, batch.dz};
@@ -161,8 +166,9 @@ inline void findCellPairs(const Particles& p, const PairInputs& in, const CellLi
     std::size_t k = first;
     for (int r = 0; r < nRuns; ++r) k = appendRunPairs(runs[r], search, out, k);
     if (window) {
-        const std::uint32_t aMobileEnd = plan.skipFrozenPairs ? cl.mobileEnd(home) : aEnd;
-        k = appendWindowPairs(stage, iz, aBegin, aMobileEnd, aEnd, plan.skipFrozenPairs, search, out, k);
+        const HomeColumnCells homeColumn{aBegin, aMobileEnd, aEnd, aEnd, split ? cl.mobileEnd(home + 1) : aboveEnd, aboveEnd};
+        k = appendHomeColumnPairs(homeColumn, split, search, out, k);
+        k = appendWindowPairs(stage, iz, aBegin, aMobileEnd, aEnd, split, search, out, k);
     }
     if constexpr (kFilter) k = dropNonInteracting(p, plan, batch, first, k);
     batch.size = k;
