@@ -150,7 +150,7 @@ inline void findCellPairs(const Particles& p, const PairInputs& in, const CellLi
     const bool window = iz > 0 && iz < nz - 1;
     const bool split = plan.skipFrozenPairs;
     const std::uint32_t aMobileEnd = split ? cl.mobileEnd(home) : aEnd;
-    // (the cell above the home cell ends where the cell after it starts: inside the column only)
+    // The cell above the home cell ends where the next one starts (read inside the column only).
     const std::uint32_t aboveEnd = window ? cl.cellStart(home + 2) : aEnd;
     NeighbourRun runs[40];
     const int nRuns = window ? 0 : neighbourRuns(cl, in, plan, columns, nColumns, home, iz, runs);

@@ -96,8 +96,8 @@ inline RowStage& threadRowStage() {
 inline float squaredDistance(float dx, float dy, float dz) { return std::fma(dz, dz, std::fma(dy, dy, dx * dx)); }
 
 // The home cell and the one above it in its column, consecutive in memory: the home particles
-// [home.begin, home.end) (mobile before home.mobileEnd) and the candidates [home.begin, above.end),
-// those from above.begin on one cell size up along z.
+// [begin, end) (mobile before mobileEnd) and the candidates [begin, aboveEnd), those from aboveBegin
+// (= end) on one cell size up along z (mobile before aboveMobileEnd).
 struct HomeColumnCells {
     std::uint32_t begin, mobileEnd, end;                 // the home cell
     std::uint32_t aboveBegin, aboveMobileEnd, aboveEnd;  // the cell above
