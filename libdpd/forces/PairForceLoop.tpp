@@ -166,7 +166,7 @@ inline void findCellPairs(const Particles& p, const PairInputs& in, const CellLi
     std::size_t k = first;
     for (int r = 0; r < nRuns; ++r) k = appendRunPairs(runs[r], search, out, k);
     if (window) {
-        const HomeColumnCells homeColumn{aBegin, aMobileEnd, aEnd, aEnd, split ? cl.mobileEnd(home + 1) : aboveEnd, aboveEnd};
+        const HomeColumnCells homeColumn{aBegin, aMobileEnd, aEnd, split ? cl.mobileEnd(home + 1) : aboveEnd, aboveEnd};
         k = appendHomeColumnPairs(homeColumn, split, search, out, k);
         k = appendWindowPairs(stage, iz, aBegin, aMobileEnd, aEnd, split, search, out, k);
     }

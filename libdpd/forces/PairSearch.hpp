@@ -96,11 +96,11 @@ inline RowStage& threadRowStage() {
 inline float squaredDistance(float dx, float dy, float dz) { return std::fma(dz, dz, std::fma(dy, dy, dx * dx)); }
 
 // The home cell and the one above it in its column, consecutive in memory: the home particles
-// [begin, end) (mobile before mobileEnd) and the candidates [begin, aboveEnd), those from aboveBegin
-// (= end) on one cell size up along z (mobile before aboveMobileEnd).
+// [begin, end) (mobile before mobileEnd) and the candidates [begin, aboveEnd), those from end on (the
+// cell above) one cell size up along z (mobile before aboveMobileEnd).
 struct HomeColumnCells {
-    std::uint32_t begin, mobileEnd, end;                 // the home cell
-    std::uint32_t aboveBegin, aboveMobileEnd, aboveEnd;  // the cell above
+    std::uint32_t begin, mobileEnd, end;     // the home cell
+    std::uint32_t aboveMobileEnd, aboveEnd;  // the cell above, which starts at end
 };
 
 #if defined(__AVX2__)
@@ -195,7 +195,7 @@ inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, 
 inline std::size_t appendHomeColumnPairs(const HomeColumnCells& c, bool split, const PairSearchInput& in,
                                          const PairSearchOutput& out, std::size_t k) {
     const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-    const __m256i aboveFrom = _mm256_set1_epi32(static_cast<int>(c.aboveBegin) - 1);
+    const __m256i aboveFrom = _mm256_set1_epi32(static_cast<int>(c.end) - 1);
     const __m256 cellZ = _mm256_set1_ps(in.cellZ);
     for (std::uint32_t j = c.begin; j < c.aboveEnd; j += 8) {
         const __m256i js = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(j)), lanes);
@@ -288,7 +288,7 @@ inline std::size_t appendHomeColumnPairs(const HomeColumnCells& c, bool split, c
         const std::uint32_t blockEnd = std::min<std::uint32_t>(block + 8, c.aboveEnd);
         for (std::uint32_t i = c.begin; i < c.end; ++i)
             for (std::uint32_t j = std::max(block, i + 1); j < blockEnd; ++j) {
-                const bool above = j >= c.aboveBegin;
+                const bool above = j >= c.end;
                 const bool mobile = j < c.mobileEnd || (above && j < c.aboveMobileEnd);
                 if (split && i >= c.mobileEnd && !mobile) continue;
                 const float dx = in.x[i] - in.x[j];
