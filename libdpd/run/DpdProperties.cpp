@@ -302,11 +302,4 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
     return sys;
 }
 
-int flowProfileAxis(const DpdModel& model) {
-    for (const auto& w : model.walls.walls())
-        if (w.normalAxis() >= 0) return w.normalAxis();
-    if (model.bodyForce.type == BodyForce::Type::reversePoiseuille) return model.bodyForce.gradientAxis;
-    return -1;
-}
-
 }  // namespace dpd

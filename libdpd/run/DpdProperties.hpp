@@ -82,8 +82,4 @@ DpdModel readDpdProperties(const std::string& caseDir);
 // the time step dt. Throws InputError/IoError when the snapshot does not fit the model.
 System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile);
 
-// The axis across which the flow varies (wall normal, or reverse-Poiseuille gradient), -1 if none:
-// used to measure the temperature about the local flow.
-int flowProfileAxis(const DpdModel& model);
-
 }  // namespace dpd

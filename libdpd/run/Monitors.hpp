@@ -3,6 +3,7 @@
 // flow, total momentum, particles behind walls, and non-finite numbers.
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
+#include "run/LocalFlowFit.hpp"
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -21,13 +22,11 @@ struct MonitorReport {
     bool finite = true;                  // no NaN or infinity in positions, velocities or forces
 };
 
-// The local flow is a straight-line fit of the velocity against the coordinate in slabs of about one
-// cutoff across `flowAxis` (the wall normal, or the gradient axis of a reverse-Poiseuille force);
-// with flowAxis < 0 it is the global mean. A slab mean alone would count the shear inside the slab
-// as heat: (shear x width)^2 / 12 per component, 0.17 kT at the walls of the published Poiseuille
-// scene (shear rate 1.45, slabs of one cutoff). The fit leaves only the curvature's share, of order
-// (g width^2 / nu)^2 / 720, below 1e-4 kT there. The temperature counts dimension x (N - 2 x number of
-// slabs) degrees of freedom, since each slab's fit takes away two per dimension.
+// kT about the local flow (run/LocalFlowFit.hpp): a plane fitted in cells across `flow`'s axes (none:
+// the global mean). It counts dimension x (N - parameters) degrees of freedom per cell, since each
+// cell's fit takes that many away per velocity component.
+MonitorReport monitor(const System& sys, const FlowAxes& flow);
+// The same across one axis (slabs of about one cutoff); flowAxis < 0: about the global mean.
 MonitorReport monitor(const System& sys, int flowAxis);
 
 }  // namespace dpd

@@ -138,7 +138,7 @@ public:
 private:
     void loop(System& sys, const RunControl& control, const DpdModel& model, FunctionObjects& functions,
               Integrator& integrator) {
-        const int flowAxis = flowProfileAxis(model);
+        const FlowAxes flowAxes = flowAxesOf(sys);
         const auto nSteps = static_cast<std::int64_t>(std::llround((control.endTime - sys.time) / control.deltaT));
         const std::int64_t firstStep = sys.step;
         lastGood_ = snapshotOf(sys);
@@ -156,7 +156,7 @@ private:
                 const double rate = (k - stepsAtReport) / std::chrono::duration<double>(now - tReport).count();
                 tReport = now;
                 stepsAtReport = k;
-                const MonitorReport m = monitor(sys, flowAxis);
+                const MonitorReport m = monitor(sys, flowAxes);
                 printReport(sys, m, interval, elapsed, rate, nSteps - k);
                 interval = WallCounters();
                 checkStability(sys, m, model);
