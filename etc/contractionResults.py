@@ -1,4 +1,4 @@
-"""The contraction tutorials (METHODS.md scene 7: tutorials/contraction/squareContraction and
+"""The contraction tutorials (docs/scenes.md scene 7: tutorials/contraction/squareContraction and
 rampContraction): picture, results table and the checks of what the scene must show, the same for
 every shape. A tutorial's plotResults.py calls main(title, test_mode) in the case directory.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Couette flow between two plates sliding in their own planes (METHODS.md section 5): the steady
+// Couette flow between two plates sliding in their own planes (docs/analysis.md section 5): the steady
 // profile is the line u(y) = c0 + c1 y over the central part of the channel (next to the walls the
 // fluid is layered and the profile bends). From the fitted line:
 //   shear rate  du/dy = c1;

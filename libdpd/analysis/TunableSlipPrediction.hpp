@@ -1,5 +1,5 @@
 #pragma once
-// The slip length a channel's tunable-slip walls should give (METHODS.md 3.5), beside the measured one:
+// The slip length a channel's tunable-slip walls should give (docs/walls.md 3.5), beside the measured one:
 //   b / z_c = 2/alpha - 7/15 - 19 alpha/1800,   alpha = z_c^2 gamma_L rho / eta,   eta = rho nu,
 // with rho the fluid's central density and nu its measured kinematic viscosity (the fit's own, or
 // slipPredictionNu of system/fitSlipLengthDict).

@@ -1,7 +1,7 @@
 #pragma once
 // The simulation box: an axis-aligned periodic domain in two or three dimensions.
 //
-// A two-dimensional scene lives in the x-z plane (the scenes of METHODS.md are drawn in x-z with y
+// A two-dimensional scene lives in the x-z plane (the scenes of docs/scenes.md are drawn in x-z with y
 // thin), so in 2-D the y axis is inactive: every particle sits at y = 0 with vy = 0, and "volume"
 // means the x-z area.
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 #pragma once
-// Darcy's law for a porous medium driven by a body force g per unit mass (METHODS.md scene 6):
+// Darcy's law for a porous medium driven by a body force g per unit mass (docs/scenes.md scene 6):
 //
 //   u_s = (k / nu) g,   so   k = nu u_s / g
 //

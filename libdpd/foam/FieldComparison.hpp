@@ -1,5 +1,5 @@
 #pragma once
-// DPD against the continuum on the same points (METHODS.md 5, continuum comparison). The finite-volume
+// DPD against the continuum on the same points (docs/analysis.md 5, continuum comparison). The finite-volume
 // solution is brought to the DPD bin centres (interpolated), never the other way round, so each DPD
 // value keeps its own error bar.
 //

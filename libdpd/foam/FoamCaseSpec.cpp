@@ -5,7 +5,7 @@
 #include "geometry/GeometryDictionary.hpp"
 #include "io/Dictionary.hpp"
 #include "io/TimeDirectories.hpp"
-#include "run/DpdProperties.hpp"
+#include "case/DpdProperties.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -1,5 +1,5 @@
 #pragma once
-// The continuum twin of a DPD case (METHODS.md 5, continuum comparison): what makeFoamCase puts into
+// The continuum twin of a DPD case (docs/analysis.md 5, continuum comparison): what makeFoamCase puts into
 // an OpenFOAM simpleFoam case, read from the DPD case and system/makeFoamCaseDict:
 //
 //   foamCase    simpleFoam;     // the OpenFOAM case to write, relative to the DPD case (default simpleFoam)

@@ -1,7 +1,7 @@
 #pragma once
 // External force per unit mass on every mobile particle: none, uniform (Poiseuille driving), or
 // reverse Poiseuille (+g in the lower half of the box along `gradientAxis`, -g in the upper half;
-// METHODS.md section 5: viscosity without walls).
+// docs/analysis.md section 5: viscosity without walls).
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The DPD pair force (METHODS.md section 1) as a small inlined evaluator.
+// The DPD pair force (docs/methods.md section 1) as a small inlined evaluator.
 //
 //   F_ij = [ a (1 - r/rc) - gamma w_D(r) (e.v_ij) + sigma w_R(r) zeta_ij / sqrt(dt) ] e_ij
 //   w_D = w_R^2,  w_R = (1 - r/rc)^(s/2),  sigma^2 = 2 gamma kT.

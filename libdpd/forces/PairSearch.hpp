@@ -187,8 +187,7 @@ inline std::uint32_t stageCell(const PairSearchInput& in, std::uint32_t jBegin, 
 
 // The pairs of the home cell's particles among themselves (j > i) and with the cell above, for a
 // home cell away from the top of its column. Written for this one case instead of built as a run
-// (NeighbourRun) for appendRunPairs: the run's set-up per home cell cost about as much as its blocks
-// (search 31.3 -> 29.8 % of a step, fluid 256,000 particles, one thread).
+// (NeighbourRun) for appendRunPairs, whose set-up per home cell cost about as much as its blocks.
 // A mobile home particle meets every candidate, a frozen one only the mobile candidates (none of
 // them after it in its own cell, where the mobile come first); pairs come block by block, for each
 // block the home particles in order.

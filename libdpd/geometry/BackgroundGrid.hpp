@@ -1,5 +1,5 @@
 #pragma once
-// A regular grid of cells covering the periodic box (METHODS.md 3.2 step 1): the solid/fluid flags
+// A regular grid of cells covering the periodic box (docs/walls.md 3.2 step 1): the solid/fluid flags
 // and the signed distance are stored at its cell centres. Along an axis where nothing varies (the
 // inactive y axis of a 2-D box, or the extrusion axis of a 2-D geometry) it has a single cell.
 #include "core/Box.hpp"

@@ -62,7 +62,7 @@ GmshSettings readGmshSettings(const Dictionary& d, const std::string& caseDir, c
 double readGridSpacing(const Dictionary& d, double cutoff) {
     if (!d.found("gridSpacing")) return cutoff / 4.0;
     const double h = d.getPositive<double>("gridSpacing");
-    if (h > cutoff) d.fail("gridSpacing", "must not exceed the cutoff (METHODS.md 3.2: cells of r_c or finer)");
+    if (h > cutoff) d.fail("gridSpacing", "must not exceed the cutoff (docs/walls.md 3.2: cells of r_c or finer)");
     return h;
 }
 

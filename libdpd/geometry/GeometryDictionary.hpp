@@ -1,5 +1,5 @@
 #pragma once
-// The `geometry` block of constant/dpdProperties: the solid of a case of any shape (METHODS.md 3.2),
+// The `geometry` block of constant/dpdProperties: the solid of a case of any shape (docs/walls.md 3.2),
 // read by randomEquilWall (and by the solver once it reflects on curved walls). It lives in
 // constant/, beside the files it names, since the shape belongs to the case, not to one tool.
 //

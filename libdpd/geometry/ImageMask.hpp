@@ -1,5 +1,5 @@
 #pragma once
-// A 2-D image mask as a solid (METHODS.md 3.2): a grey image whose pixels are solid or fluid, laid
+// A 2-D image mask as a solid (docs/walls.md 3.2): a grey image whose pixels are solid or fluid, laid
 // in the plane of two box axes and extruded along the third (GeometryFrame::planar).
 //
 // Placement: the image is seen with its first in-plane axis (columns) to the right and its second

@@ -1,5 +1,5 @@
 #pragma once
-// Solid/fluid flags on a background grid (METHODS.md 3.2 step 1): a cell is solid when its centre is.
+// Solid/fluid flags on a background grid (docs/walls.md 3.2 step 1): a cell is solid when its centre is.
 #include "geometry/BackgroundGrid.hpp"
 
 #include <cstdint>

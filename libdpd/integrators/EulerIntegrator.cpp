@@ -1,7 +1,7 @@
 #include "integrators/EulerIntegrator.hpp"
 
 #include "integrators/StepParts.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 namespace dpd {
 

@@ -9,7 +9,7 @@
 // adds (mobileFactor(mobile) * h) instead of guarding a store, which would keep the loop from
 // vectorising.
 #include "core/MobileSpecies.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -2,7 +2,7 @@
 
 #include "integrators/ForEachParticle.hpp"
 #include "integrators/StepParts.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 namespace dpd {
 

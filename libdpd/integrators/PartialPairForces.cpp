@@ -1,7 +1,7 @@
 #include "integrators/PartialPairForces.hpp"
 
 #include "forces/PairForceLoop.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 #include <cmath>
 

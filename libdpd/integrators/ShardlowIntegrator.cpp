@@ -3,7 +3,7 @@
 #include "integrators/PartialPairForces.hpp"
 #include "integrators/ShardlowSweep.hpp"
 #include "integrators/StepParts.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 namespace dpd {
 

@@ -1,7 +1,7 @@
 #include "integrators/ShardlowSweep.hpp"
 
 #include "integrators/PairSweep.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 #include <cmath>
 

@@ -22,8 +22,8 @@ namespace dpd {
 
 // What a sort does with the particles' forces: move them along with the particles, or leave them in
 // the order they had before the sort, for a caller whose next force computation writes over them
-// (moving forces that are never read again was a third of the sort's gathering: 3 % of a step). The
-// forces left behind can still be read through order().
+// (moving forces that are never read again is wasted bandwidth). The forces left behind can still be
+// read through order().
 enum class SortForces { Move, Leave };
 
 class CellList {

@@ -33,10 +33,8 @@ inline __m256i mulHi(__m256i a, __m256i m) {
 }
 
 // Word 0 of Philox4x32-10 for G groups of eight counters (lo, hi, s0, s1) under one key. The groups
-// go through each round together: a round's products take ~7 cycles one after the other, and a
-// group's ~160 instructions nearly fill the out-of-order window, so one group at a time left the
-// multipliers idle. Two groups side by side: the generator's share of a step (fluid, 256,000
-// particles, one thread) 10.6 -> 8.4 %; four: no better.
+// go through each round together, so that one group's dependent products do not leave the
+// multipliers idle (measurements: applications/utilities/dpdBenchmark/README.md).
 template <int G>
 inline void philoxFirstWords(const __m256i (&lo)[G], const __m256i (&hi)[G], std::uint32_t s0, std::uint32_t s1,
                              PhiloxKey key, __m256i (&word0)[G]) {

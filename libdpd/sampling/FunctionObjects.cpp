@@ -1,7 +1,7 @@
 #include "sampling/FunctionObjects.hpp"
 
 #include "io/Dictionary.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 #include "sampling/BinAccumulatorFile.hpp"
 #include "sampling/BinLayoutDictionary.hpp"
 #include "sampling/PairVirial.hpp"

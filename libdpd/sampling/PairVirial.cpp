@@ -2,7 +2,7 @@
 
 #include "forces/DpdPairForce.hpp"
 #include "forces/PairForceLoop.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The pair virial per bin, for the stress profile (METHODS.md section 5): a traversal of all
+// The pair virial per bin, for the stress profile (docs/analysis.md section 5): a traversal of all
 // interacting pairs through the system's cell list, done only at sample steps and apart from the hot
 // pair loop of the integrator.
 //

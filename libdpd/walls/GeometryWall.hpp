@@ -1,5 +1,5 @@
 #pragma once
-// A wall of any shape (METHODS.md 3.2 steps 5-6): the solid of the case's `geometry` block, seen
+// A wall of any shape (docs/walls.md 3.2 steps 5-6): the solid of the case's `geometry` block, seen
 // through its signed distance field (distance > 0 in the fluid, normal into the fluid). After each
 // move a fluid particle whose path entered the solid is put back by mirroring it across the surface
 // where it entered, and its velocity (relative to the resting wall) is changed by the wall's rule --

@@ -2,7 +2,7 @@
 // A planar wall: the solid is the half-space behind the plane, the normal points into the fluid.
 // Fluid particles that end a step behind the plane are put back by mirroring their position across
 // it, and their velocity, taken relative to the wall's, is changed by the wall's reflection rule
-// (METHODS.md section 3.3).
+// (docs/walls.md section 3.3).
 //
 // A moving wall slides in its own plane (its velocity has no normal component), so the plane maps
 // onto itself and only the wall's frozen particles move: they carry the wall's velocity
@@ -20,7 +20,7 @@ enum class ReflectionRule {
     bounceBack,     // reverse the whole relative velocity (no slip)
     maxwellian,     // diffuse: a new velocity drawn at the wall temperature, leaving the wall
     bounceLayer,    // a layer of thickness alpha r_c in front of the plane turns approaching particles
-                    // round (METHODS.md 3.2 steps 5-6); crossings of the plane are failures, counted
+                    // round (docs/walls.md 3.2 steps 5-6); crossings of the plane are failures, counted
     bounceForward,  // modified bounce-forward: mirror the penetrated position and reverse the velocity
                     // the particle has there after the step (the step is finished at the penetrated
                     // position, then the particle is put back)

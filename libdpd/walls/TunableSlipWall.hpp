@@ -1,5 +1,5 @@
 #pragma once
-// The tunable-slip wall of Smiatek, Allen and Schmid (Eur. Phys. J. E 26, 115 (2008); METHODS.md 3.5):
+// The tunable-slip wall of Smiatek, Allen and Schmid (Eur. Phys. J. E 26, 115 (2008); docs/walls.md 3.5):
 // a smooth plane that acts on each fluid particle at distance z in front of it with
 //   - a dissipative force  F^D = -gamma_L w_L(z) (v - v_wall),
 //   - a random force       F^R = sqrt(2 kT gamma_L w_L(z)) xi / sqrt(dt),   w_L(z) = 1 - z/z_c (z < z_c),

@@ -1,6 +1,6 @@
 #pragma once
 // The velocity a wall gives a particle it returns, for a wall at rest locally with unit normal n
-// into the fluid (METHODS.md 3.2-3.3). Velocities are relative to the wall. Shared by planar walls
+// into the fluid (docs/walls.md 3.2-3.3). Velocities are relative to the wall. Shared by planar walls
 // (WallSet) and walls of any shape (GeometryWall), which differ only in where n comes from.
 // Random draws are keyed by (step, particle id, stream), so they do not depend on the thread count;
 // `stream` keeps the draws of different kinds of wall apart.
@@ -22,7 +22,7 @@ double emittedNormalSpeed(const PairRandom& random, std::uint64_t step, std::uin
 Eigen::Vector3d diffuseVelocity(const Eigen::Vector3d& normal, const Box& box, const PairRandom& random,
                                 std::uint64_t step, std::uint64_t id, double kT, std::uint32_t stream);
 
-// Bounce layer (METHODS.md 3.2 step 6): the tangential velocity is reversed and the normal one is
+// Bounce layer (docs/walls.md 3.2 step 6): the tangential velocity is reversed and the normal one is
 // replaced by a speed the wall emits at its temperature, pointing into the fluid.
 Eigen::Vector3d turnedRound(const Eigen::Vector3d& normal, const Eigen::Vector3d& relative, const PairRandom& random,
                             std::uint64_t step, std::uint64_t id, double kT, std::uint32_t stream);

@@ -3,7 +3,7 @@
 // shear rate, slip velocities, slip lengths and (from a stress column) the viscosity to rounding; with
 // noise the quoted errors must cover the truth about 68 % of the time.
 #include "analysis/CouetteFit.hpp"
-#include "analysis/FitSlipLengthTool.hpp"
+#include "tools/FitSlipLengthTool.hpp"
 
 #include "core/Error.hpp"
 #include "sampling/ProfileTable.hpp"

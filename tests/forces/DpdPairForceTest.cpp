@@ -6,7 +6,7 @@
 // with rc = 1 the weight w = 1 - r/rc = 0.5. The evaluator returns the scalar F.e / r, so that
 // F_ij = forceOverR * r_ij; a force of magnitude F along e is forceOverR = F / r = 2 F.
 #include "forces/DpdPairForce.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 #include "SinglePrecisionPairs.hpp"
 
 #include <gtest/gtest.h>

@@ -14,7 +14,7 @@
 // gamma w_D e.(dt f / 2) ~ 4.5 x 0.25 x 0.02 x 20 ~ 0.5.
 #include "integrators/Integrator.hpp"
 #include "integrators/PartialPairForces.hpp"
-#include "run/StandardFluid.hpp"
+#include "setup/StandardFluid.hpp"
 
 #include <gtest/gtest.h>
 

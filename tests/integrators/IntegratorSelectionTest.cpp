@@ -1,10 +1,10 @@
-// Choosing the integrator in constant/dpdProperties (run/DpdProperties.cpp, integrators/Integrator.cpp):
+// Choosing the integrator in constant/dpdProperties (case/DpdProperties.cpp, integrators/Integrator.cpp):
 // every listed type builds the scheme of that name, and a wrong type or a misplaced lambda is an input
 // error naming the file, the line and the keyword, and listing the valid types.
 #include "core/Error.hpp"
 #include "integrators/Integrator.hpp"
 #include "io/Dictionary.hpp"
-#include "run/DpdProperties.hpp"
+#include "case/DpdProperties.hpp"
 
 #include <gtest/gtest.h>
 

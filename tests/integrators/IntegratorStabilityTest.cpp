@@ -26,9 +26,9 @@
 // decides). `drifts` takes a step whose measured error is at least twice the bound and requires
 // <kT> - 1 - bound > 4 SE. Both also require the run to stay stable.
 #include "integrators/Integrator.hpp"
-#include "integrators/TemperatureProbe.hpp"
-#include "run/DpdProperties.hpp"
-#include "run/StandardFluid.hpp"
+#include "studies/TemperatureProbe.hpp"
+#include "case/DpdProperties.hpp"
+#include "setup/StandardFluid.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // fluid particles, 1 for a fluid particle against a frozen one); momentum and the velocity components
 // normal to e are untouched.
 #include "integrators/ShardlowSweep.hpp"
-#include "run/System.hpp"
+#include "system/System.hpp"
 
 #include <gtest/gtest.h>
 

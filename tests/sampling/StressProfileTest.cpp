@@ -3,8 +3,8 @@
 // fluid against the Groot-Warren equation of state, and the shear stress of periodic Poiseuille flow
 // against the exact momentum balance sigma_xz(z) = -rho g (z - z_c).
 #include "integrators/GrootWarrenIntegrator.hpp"
-#include "run/InitialConditions.hpp"
-#include "run/StandardFluid.hpp"
+#include "setup/InitialConditions.hpp"
+#include "setup/StandardFluid.hpp"
 #include "sampling/BinProfile.hpp"
 #include "sampling/BlockStatistics.hpp"
 #include "sampling/PairVirial.hpp"

@@ -1,9 +1,9 @@
-// Slip lever a_wf (METHODS.md sections 1 and 3.4): an unlike pair of constant/dpdProperties that is
+// Slip lever a_wf (docs/methods.md section 1 and docs/walls.md 3.4): an unlike pair of constant/dpdProperties that is
 // left out, or given without `a`, is mixed from the like pairs as a_wf = sqrt(a_ww a_ff), and the log
 // notes say so; a pair that cannot be determined is an error naming the file and the pair.
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
-#include "run/DpdProperties.hpp"
+#include "case/DpdProperties.hpp"
 
 #include <gtest/gtest.h>
 

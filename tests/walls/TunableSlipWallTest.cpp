@@ -1,13 +1,13 @@
-// The tunable-slip wall (METHODS.md 3.5; Smiatek, Allen and Schmid 2008): its force against hand
+// The tunable-slip wall (docs/walls.md 3.5; Smiatek, Allen and Schmid 2008): its force against hand
 // values, fluctuation-dissipation (a gas held only by the walls takes the walls' temperature), the WCA
 // wall keeping a DPD fluid out (dt up to sigma / 50), thread independence, the predicted slip length, and the
 // errors of constant/dpdProperties.
 #include "core/Error.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "io/Dictionary.hpp"
-#include "run/DpdProperties.hpp"
-#include "run/InitialConditions.hpp"
-#include "run/System.hpp"
+#include "case/DpdProperties.hpp"
+#include "setup/InitialConditions.hpp"
+#include "system/System.hpp"
 #include "sampling/BlockStatistics.hpp"
 #include "walls/TunableSlipWall.hpp"
 

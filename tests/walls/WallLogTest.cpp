@@ -1,10 +1,10 @@
-// The solver's log reports what the walls did (run/Runner.cpp): each wall's rule and velocity and the
+// The solver's log reports what the walls did (tools/Runner.cpp): each wall's rule and velocity and the
 // frozen particles it carries in the header; per report interval the particles each wall returned and
 // those found behind its plane. A bounce layer far too thin for the step lets particles through: the
 // log must show it, not hide it. Mixed pair coefficients are noted in the header.
 #include "io/Snapshot.hpp"
-#include "run/InitialConditions.hpp"
-#include "run/Runner.hpp"
+#include "setup/InitialConditions.hpp"
+#include "tools/Runner.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,10 +1,10 @@
-// Planar walls (walls/PlanarWall.*, WallSet.*): the reflection rules of METHODS.md section 3.3 applied
+// Planar walls (walls/PlanarWall.*, WallSet.*): the reflection rules of docs/walls.md section 3.3 applied
 // by a System during a step, the Maxwellian (diffuse) wall's velocity distribution, the reflection
-// counters; and the frozen lattices behind a wall (walls/FrozenLattice.*, section 3.1).
+// counters; and the frozen lattices behind a wall (setup/FrozenLattice.*, section 3.1).
 #include "integrators/EulerIntegrator.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
-#include "run/System.hpp"
-#include "walls/FrozenLattice.hpp"
+#include "system/System.hpp"
+#include "setup/FrozenLattice.hpp"
 
 #include <gtest/gtest.h>
 
@@ -148,7 +148,7 @@ TEST(WallReflection, CountersCountOnlyCrossings) {
 // back, not wrapped round to just below z = hi (the integrators reflect before wrapping). Such walls
 // are refused by buildSystem and blockFrozenWall all the same (WallSet::thinWall), because fluid would
 // interact with fluid through them across the periodic boundary; this test holds the reflection
-// itself to METHODS.md 3.3: at z = 0.02 moving at -4 the particle ends at -0.02, is mirrored to 0.02
+// itself to docs/walls.md 3.3: at z = 0.02 moving at -4 the particle ends at -0.02, is mirrored to 0.02
 // and bounced back to v_z = +4.
 TEST(WallReflection, WallOnTheBoxFaceStillReflects) {
     const std::vector<PlanarWall> walls = {wall({0, 0, 0}, {0, 0, 1}, ReflectionRule::bounceBack),

@@ -1,11 +1,11 @@
-// The bounce-layer and modified bounce-forward rules (METHODS.md 3.2 steps 5-6 and 3.3), moving walls
+// The bounce-layer and modified bounce-forward rules (docs/walls.md 3.2 steps 5-6 and 3.3), moving walls
 // carrying their frozen particles, and each rule's signature on a gas or a DPD fluid: specular walls
 // slip, bounce-back walls drag the fluid, Maxwellian walls hold the wall temperature, a bounce layer
 // far too thin lets particles through and the crossings are counted.
 #include "integrators/GrootWarrenIntegrator.hpp"
-#include "run/InitialConditions.hpp"
-#include "run/System.hpp"
-#include "walls/FrozenLattice.hpp"
+#include "setup/InitialConditions.hpp"
+#include "system/System.hpp"
+#include "setup/FrozenLattice.hpp"
 
 #include <gtest/gtest.h>
 

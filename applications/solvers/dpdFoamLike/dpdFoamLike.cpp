@@ -1,6 +1,6 @@
 // dpdFoamLike: runs a DPD case (system/controlDict, constant/dpdProperties, a start time directory).
 #include "app/ToolCommandLine.hpp"
-#include "run/Runner.hpp"
+#include "tools/Runner.hpp"
 
 #include <iostream>
 

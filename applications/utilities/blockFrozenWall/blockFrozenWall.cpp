@@ -2,8 +2,8 @@
 // and frozen lattice walls behind them (system/blockFrozenWallDict).
 #include "app/ToolCommandLine.hpp"
 #include "io/Dictionary.hpp"
-#include "run/DpdProperties.hpp"
-#include "walls/BlockFrozenWall.hpp"
+#include "case/DpdProperties.hpp"
+#include "setup/BlockFrozenWall.hpp"
 
 #include <filesystem>
 #include <iostream>

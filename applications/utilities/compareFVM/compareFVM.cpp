@@ -1,7 +1,7 @@
 // compareFVM: the DPD profile against the OpenFOAM simpleFoam solution of the case's continuum twin
-// (makeFoamCase); results in postProcessing/compareFVM/<time>/; see libdpd/foam/CompareFVMTool.hpp.
+// (makeFoamCase); results in postProcessing/compareFVM/<time>/; see libdpd/tools/CompareFVMTool.hpp.
 #include "app/ToolCommandLine.hpp"
-#include "foam/CompareFVMTool.hpp"
+#include "tools/CompareFVMTool.hpp"
 
 #include <iostream>
 

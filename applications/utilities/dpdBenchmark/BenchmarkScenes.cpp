@@ -1,9 +1,9 @@
 #include "BenchmarkScenes.hpp"
 
 #include "io/Dictionary.hpp"
-#include "run/DpdProperties.hpp"
-#include "run/StandardFluid.hpp"
-#include "walls/BlockFrozenWall.hpp"
+#include "case/DpdProperties.hpp"
+#include "setup/StandardFluid.hpp"
+#include "setup/BlockFrozenWall.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -2,7 +2,7 @@
 // The scenes dpdBenchmark times: the standard DPD fluid in a periodic box, and a channel between
 // frozen fcc walls with bounce-back (the set-up of tutorials/channel/poiseuille, scaled to the
 // particle count), sampled every step by a binned profile as a run would be.
-#include "run/System.hpp"
+#include "system/System.hpp"
 #include "sampling/FunctionObjects.hpp"
 
 #include <string>

@@ -2,7 +2,7 @@
 
 #include "forces/PairForceLoop.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
-#include "run/Monitors.hpp"
+#include "system/Monitors.hpp"
 
 #include <omp.h>
 

@@ -1,6 +1,6 @@
 // fitSlipLength: viscosity, slip length and slip velocity from the profiles of profileBins, as set in
 // system/fitSlipLengthDict; results in postProcessing/fitSlipLength/<time>/fit.dat.
-#include "analysis/FitSlipLengthTool.hpp"
+#include "tools/FitSlipLengthTool.hpp"
 #include "app/ToolCommandLine.hpp"
 
 #include <iostream>

@@ -2,7 +2,7 @@
 // against the time step on the standard fluid, from system/integratorSpeedAccuracyDict, into
 // postProcessing/integratorSpeedAccuracy/speedAccuracy.dat.
 #include "app/ToolCommandLine.hpp"
-#include "integrators/SpeedAccuracyStudy.hpp"
+#include "studies/SpeedAccuracyStudy.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Dictionary.hpp"
 

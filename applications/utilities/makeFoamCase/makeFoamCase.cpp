@@ -1,7 +1,7 @@
 // makeFoamCase: writes the OpenFOAM simpleFoam twin of a DPD case (mesh, nu, body force, sampling
 // lines, Allrun), as set in the optional system/makeFoamCaseDict; see libdpd/foam/FoamCaseSpec.hpp.
 #include "app/ToolCommandLine.hpp"
-#include "foam/MakeFoamCaseTool.hpp"
+#include "tools/MakeFoamCaseTool.hpp"
 
 #include <iostream>
 

@@ -2,7 +2,7 @@
 // accumulated, written as tables under postProcessing/profileBins/<time>/; -snapshot bins the
 // particles of <time>/particles.h5 instead, as system/profileBinsDict says.
 #include "app/ToolCommandLine.hpp"
-#include "sampling/ProfileBinsTool.hpp"
+#include "tools/ProfileBinsTool.hpp"
 
 #include <iostream>
 

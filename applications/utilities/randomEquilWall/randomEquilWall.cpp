@@ -1,12 +1,12 @@
-// randomEquilWall: writes 0/ for walls of any shape (METHODS.md 3.2): the box filled and
+// randomEquilWall: writes 0/ for walls of any shape (docs/walls.md 3.2): the box filled and
 // equilibrated as one fluid, then the particles inside the solid of the geometry block of
 // constant/dpdProperties frozen within one cutoff of the fluid and dropped deeper in
 // (system/randomEquilWallDict).
 #include "app/ToolCommandLine.hpp"
 #include "core/Axis.hpp"
-#include "geometry/RandomEquilWall.hpp"
+#include "setup/RandomEquilWall.hpp"
 #include "io/Dictionary.hpp"
-#include "run/DpdProperties.hpp"
+#include "case/DpdProperties.hpp"
 
 #include <filesystem>
 #include <iostream>

@@ -50,7 +50,7 @@ def heating_at_shear(periodic, g, nu):
 
 def compare_walls(g, nu_ref, cutoff, test):
     """Lattice walls against random walls from the mask and the gmsh file: walls.png, resultsWalls.dat
-    and the checks (METHODS.md 3.2: the random walls give the same Poiseuille profile)."""
+    and the checks (docs/walls.md 3.2: the random walls give the same Poiseuille profile)."""
     control = read_dict("system/controlDict")
     lattice_fit = read_dict(latest("postProcessing/fitSlipLength/*/fit.dat"))
     lo, hi = lattice_fit["wallPosition"]
@@ -90,7 +90,7 @@ def compare_walls(g, nu_ref, cutoff, test):
     lines.append(f"# profile differences over the {n} bins of the fit range: effective independent bins {dof_eff:.1f} "
                  f"(the slow modes correlate neighbours), so chi2/dof is expected in [{low:.2f}, {high:.2f}] (3 sigma)")
     # The mask and the gmsh file build the same random wall, and random and lattice walls must give
-    # the same profile (METHODS.md 3.2). A Poiseuille profile is fixed by nu and the two slip lengths
+    # the same profile (docs/walls.md 3.2). A Poiseuille profile is fixed by nu and the two slip lengths
     # (g and d being the same): those are checked pair by pair with jackknife errors over independent
     # super-blocks. The per-bin chi2 of the difference is reported, not checked: its bin errors
     # (profileBins' times sqrt(s), s pooled from five super-blocks) miss most of the slow mode's

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Porous medium tutorial (METHODS.md scene 6): pictures, results table and the checks.
+"""Porous medium tutorial (docs/scenes.md scene 6): pictures, results table and the checks.
 
 Reads the DPD 2-D field (postProcessing/profileBins/<time>/flowField.dat, 1 x 1 bins), the solver's
 log (kT series, particles inside the solid, run time), the simpleFoam twin (simpleFoam/<time>/C, U,
@@ -244,7 +244,7 @@ def main():
 
     steps, seconds, rate = int(run.group(1)), float(run.group(2)), float(run.group(3))
     with open("results.dat", "w") as f:
-        f.write(f"# Porous medium (METHODS.md scene 6){' - TEST MODE' if test_mode else ''}: {table}, {cmp_path}\n")
+        f.write(f"# Porous medium (docs/scenes.md scene 6){' - TEST MODE' if test_mode else ''}: {table}, {cmp_path}\n")
         f.write(f"mask               {mask_path}  ({shape[1]} x {shape[0]} bins of 1 r_c)\n")
         f.write(f"porosity           DPD {cmp['porosityDPD']:.4f}  simpleFoam {cmp['porosityFVM']:.4f}\n")
         f.write(f"nu                 {twin['nu']:.5f}  ({twin['nuSource']})\n")

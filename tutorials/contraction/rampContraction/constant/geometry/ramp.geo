@@ -1,4 +1,4 @@
-// Ramp contraction (METHODS.md scene 7): a channel 60 long and 30 wide, narrowed
+// Ramp contraction (docs/scenes.md scene 7): a channel 60 long and 30 wide, narrowed
 // in the middle to half its width by a symmetric trapezoid on each wall: 45-degree ramps from the
 // wall at |x| = b up to the throat, |z| = h over |x| < c. The throat is the square contraction's
 // (half width, length 2c = H); the ramps replace its vertical steps. gmsh's x-y plane is the box's x-z

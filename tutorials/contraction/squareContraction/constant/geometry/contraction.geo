@@ -1,4 +1,4 @@
-// Square contraction (METHODS.md scene 7): a channel 60 long and 30 wide, narrowed in the middle
+// Square contraction (docs/scenes.md scene 7): a channel 60 long and 30 wide, narrowed in the middle
 // by a square step to 15 over a length of 15. gmsh's x-y plane is the box's x-z plane
 // (extrudeAxis y in constant/dpdProperties); the fluid is the surface of the group "fluid".
 L = 30;  H = 15;  c = 7.5;  h = 7.5;

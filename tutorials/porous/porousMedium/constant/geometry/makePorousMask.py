@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The porous medium of METHODS.md scene 6 as an image mask (1 pixel = 1 r_c; black = solid).
+"""The porous medium of docs/scenes.md scene 6 as an image mask (1 pixel = 1 r_c; black = solid).
 
 Grains of varied size and shape: the periodic Voronoi cells of Poisson-disc seeds of three sizes,
 each shrunk by its own throat half-width (the common scale set by bisection so that the solid covers

@@ -1,0 +1,305 @@
+#include "case/DpdProperties.hpp"
+
+#include "geometry/GeometryDictionary.hpp"
+
+#include "core/Error.hpp"
+#include "io/Dictionary.hpp"
+#include "io/Snapshot.hpp"
+#include "system/System.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace dpd {
+
+namespace {
+
+SpeciesTable readSpecies(const Dictionary& d) {
+    const Dictionary& sd = d.subDict("species");
+    SpeciesTable table;
+    for (const std::string& name : sd.keys()) {
+        if (!sd.isDict(name)) sd.fail(name, "each species is a sub-dictionary, e.g. fluid { frozen no; }");
+        if (name.find('-') != std::string::npos) sd.fail(name, "a species name may not contain '-'");
+        const Dictionary& s = sd.subDict(name);
+        s.checkKeys({"frozen"});
+        table.add({name, s.getOrDefault<bool>("frozen", false)});
+    }
+    if (table.size() == 0) d.fail("species", "at least one species is needed");
+    if (table.size() > 255) d.fail("species", "at most 255 species");
+    return table;
+}
+
+// One pair entry: { a ..; gamma ..; }, where `a` may be left out to be mixed from the like pairs.
+struct PairEntry {
+    bool given = false;
+    bool hasA = false;
+    PairCoeffs coeffs;
+};
+
+// Mixing rule (docs/methods.md section 1): a pair not given, or given without `a`, takes
+// a_ij = sqrt(a_ii a_jj) from the like pairs (and, when not given at all, gamma_ij = sqrt(gamma_ii
+// gamma_jj), which is the common gamma when the like pairs share one). Each use goes into `notes`.
+void mixPair(const Dictionary& d, const SpeciesTable& species, const std::vector<PairEntry>& entries, int a, int b,
+             PairTable& table, std::vector<std::string>& notes) {
+    const int n = species.size();
+    const PairEntry& e = entries[a * n + b];
+    const PairEntry& aa = entries[a * n + a];
+    const PairEntry& bb = entries[b * n + b];
+    const std::string name = species[a].name + "-" + species[b].name;
+    if (!(aa.hasA && bb.hasA))
+        d.fail("pairCoeffs", "no coefficient a for the pair " + name + ": give " + name + " { a ...; gamma ...; }, or both " +
+                                 species[a].name + "-" + species[a].name + " and " + species[b].name + "-" +
+                                 species[b].name + " so that a is mixed as sqrt(a_" + species[a].name + " a_" +
+                                 species[b].name + ")");
+    if (aa.coeffs.a < 0.0 || bb.coeffs.a < 0.0)
+        d.fail("pairCoeffs", "cannot mix a for the pair " + name + ": the like pairs have a negative a");
+    PairCoeffs c = e.coeffs;
+    c.a = std::sqrt(aa.coeffs.a * bb.coeffs.a);
+    std::ostringstream note;
+    note << name << ": a = sqrt(" << aa.coeffs.a << " x " << bb.coeffs.a << ") = " << c.a;
+    if (!e.given) {
+        c.gamma = std::sqrt(aa.coeffs.gamma * bb.coeffs.gamma);
+        note << ", gamma = sqrt(" << aa.coeffs.gamma << " x " << bb.coeffs.gamma << ") = " << c.gamma;
+    }
+    notes.push_back(note.str() + " (mixed)");
+    table.set(a, b, c);
+}
+
+PairTable readPairs(const Dictionary& d, const SpeciesTable& species, std::vector<std::string>& notes) {
+    const Dictionary& pd = d.subDict("pairCoeffs");
+    const int n = species.size();
+    PairTable table(n);
+    std::vector<PairEntry> entries(n * n);
+    for (const std::string& key : pd.keys()) {
+        const auto dash = key.find('-');
+        const int a = dash == std::string::npos ? -1 : species.indexOf(key.substr(0, dash));
+        const int b = dash == std::string::npos ? -1 : species.indexOf(key.substr(dash + 1));
+        if (a < 0 || b < 0) pd.fail(key, "expected <species>-<species> with species from the 'species' dictionary");
+        if (!pd.isDict(key)) pd.fail(key, "expected a sub-dictionary { a ...; gamma ...; }");
+        const Dictionary& c = pd.subDict(key);
+        c.checkKeys({"a", "gamma"});
+        PairEntry e;
+        e.given = true;
+        e.hasA = c.found("a");
+        if (a == b && !e.hasA) c.fail("a", "a like pair needs its a (only unlike pairs can be mixed)");
+        e.coeffs = {e.hasA ? c.get<double>("a") : 0.0, c.getNonNegative<double>("gamma"), 0.0, true};
+        entries[a * n + b] = entries[b * n + a] = e;
+        table.set(a, b, e.coeffs);
+    }
+    for (int a = 0; a < n; ++a)
+        for (int b = a; b < n; ++b) {
+            const PairEntry& e = entries[a * n + b];
+            if (e.given && e.hasA) continue;
+            if (species[a].frozen && species[b].frozen) continue;  // never interact
+            if (a == b) d.fail("pairCoeffs", "no coefficients for the pair " + species[a].name + "-" + species[b].name);
+            mixPair(d, species, entries, a, b, table, notes);
+        }
+    return table;
+}
+
+IntegratorSettings readIntegrator(const Dictionary& d) {
+    IntegratorSettings s;
+    if (!d.found("integrator")) return s;
+    const Dictionary& id = d.subDict("integrator");
+    id.checkKeys({"type", "lambda"});
+    s.type = id.get<std::string>("type");
+    const auto& types = integratorTypes();
+    if (std::find(types.begin(), types.end(), s.type) == types.end())
+        id.fail("type", "unknown integrator '" + s.type + "': expected " + integratorTypeList());
+    if (s.type != "GrootWarren" && id.found("lambda")) id.fail("lambda", "only the GrootWarren integrator takes lambda");
+    s.lambda = id.getOrDefault<double>("lambda", 0.65);
+    if (s.lambda < 0.0 || s.lambda > 1.0) id.fail("lambda", "must lie in [0, 1]");
+    return s;
+}
+
+BodyForce readBodyForce(const Dictionary& d, int dimension) {
+    BodyForce f;
+    if (!d.found("bodyForce")) return f;
+    const Dictionary& bd = d.subDict("bodyForce");
+    bd.checkKeys({"type", "value", "gradientAxis"});
+    const std::string type = bd.get<std::string>("type");
+    try {
+        f.type = bodyForceTypeFromName(type);
+    } catch (const std::invalid_argument& e) {
+        bd.fail("type", e.what());
+    }
+    if (f.type == BodyForce::Type::none) return f;
+    f.g = bd.get<Eigen::Vector3d>("value");
+    if (dimension == 2 && f.g.y() != 0.0) bd.fail("value", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    if (f.type == BodyForce::Type::reversePoiseuille) {
+        f.gradientAxis = bd.getAxis("gradientAxis");
+        if (f.g[f.gradientAxis] != 0.0) bd.fail("value", "must be perpendicular to gradientAxis");
+    }
+    return f;
+}
+
+// tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed.
+TunableSlipParameters readTunableSlip(const Dictionary& td) {
+    td.checkKeys({"gammaL", "zc", "epsilon", "sigma"});
+    TunableSlipParameters t;
+    t.gammaL = td.getNonNegative<double>("gammaL");
+    t.zc = td.getPositive<double>("zc");
+    t.epsilon = td.getPositive<double>("epsilon");
+    t.sigma = td.getPositive<double>("sigma");
+    return t;
+}
+
+PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dimension, double cutoff) {
+    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha", "tunableSlip"});
+    const std::string type = wd.get<std::string>("type");
+    if (type != "plane") wd.fail("type", "expected plane (the only wall shape so far)");
+    PlanarWall w;
+    w.name = name;
+    w.point = wd.get<Eigen::Vector3d>("point");
+    w.normal = wd.get<Eigen::Vector3d>("normal");
+    if (w.normal.norm() == 0.0) wd.fail("normal", "must not be zero");
+    w.normal.normalize();
+    if (dimension == 2 && w.normal.y() != 0.0) wd.fail("normal", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    w.velocity = wd.getOrDefault<Eigen::Vector3d>("velocity", Eigen::Vector3d::Zero());
+    if (std::abs(w.velocity.dot(w.normal)) > 1e-12) wd.fail("velocity", "a wall can only slide in its own plane");
+    if (dimension == 2 && w.velocity.y() != 0.0) wd.fail("velocity", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    if (wd.found("tunableSlip")) {
+        if (!wd.isDict("tunableSlip")) wd.fail("tunableSlip", "expected { gammaL ...; zc ...; epsilon ...; sigma ...; }");
+        w.hasTunableSlip = true;
+        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"));
+    }
+    // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
+    // since it adds no tangential friction of its own to the slip that gammaL sets.
+    const std::string defaultRule = w.hasTunableSlip ? "specular" : "bounceBack";
+    try {
+        w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", defaultRule));
+    } catch (const std::invalid_argument& e) {
+        wd.fail("reflection", e.what());
+    }
+    // The bounce layer's thickness in cutoffs (docs/walls.md 3.2 step 5: about 0.06-0.1 works).
+    if (w.rule == ReflectionRule::bounceLayer) w.layer = wd.getPositive<double>("alpha") * cutoff;
+    else if (wd.found("alpha")) wd.fail("alpha", "only a wall with reflection bounceLayer has a layer thickness alpha");
+    return w;
+}
+
+WallSet readWalls(const Dictionary& d, int dimension, double cutoff) {
+    WallSet walls;
+    if (!d.found("walls")) return walls;
+    const Dictionary& wd = d.subDict("walls");
+    for (const std::string& name : wd.keys()) {
+        if (!wd.isDict(name)) wd.fail(name, "each wall is a sub-dictionary");
+        walls.add(readPlanarWall(wd.subDict(name), name, dimension, cutoff));
+    }
+    return walls;
+}
+
+// The geometry block (if any) and the rule of the wall it makes (geometryWall; walls/GeometryWall.hpp).
+GeometryWallSettings readGeometryWall(const Dictionary& d, double cutoff) {
+    GeometryWallSettings g;
+    if (!d.found("geometry")) {
+        if (d.found("geometryWall")) d.fail("geometryWall", "a geometryWall needs the geometry block it acts on");
+        return g;
+    }
+    g.geometry = std::make_shared<const Dictionary>(d.subDict("geometry"));
+    if (!d.found("geometryWall")) return g;
+    const Dictionary& wd = d.subDict("geometryWall");
+    wd.checkKeys({"reflection", "alpha"});
+    try {
+        g.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", "bounceBack"));
+    } catch (const std::invalid_argument& e) {
+        wd.fail("reflection", e.what());
+    }
+    if (g.rule == ReflectionRule::bounceForward) wd.fail("reflection", "bounceForward is for planar walls only");
+    if (g.rule == ReflectionRule::bounceLayer) g.layer = wd.getPositive<double>("alpha") * cutoff;
+    else if (wd.found("alpha")) wd.fail("alpha", "only reflection bounceLayer has a layer thickness alpha");
+    return g;
+}
+
+StabilitySettings readStability(const Dictionary& d) {
+    StabilitySettings s;
+    if (!d.found("stability")) return s;
+    const Dictionary& sd = d.subDict("stability");
+    sd.checkKeys({"maxKTRatio", "maxInsideWalls"});
+    s.maxKTRatio = sd.getOrDefault<double>("maxKTRatio", s.maxKTRatio);
+    if (s.maxKTRatio <= 1.0) sd.fail("maxKTRatio", "must be greater than 1");
+    s.maxInsideWalls = sd.getOrDefault<long>("maxInsideWalls", s.maxInsideWalls);
+    if (s.maxInsideWalls < 0) sd.fail("maxInsideWalls", "must not be negative");
+    return s;
+}
+
+}  // namespace
+
+DpdModel readDpdModel(const Dictionary& d) {
+    // geometry: the solid of any shape, read where it is used (geometry/GeometryDictionary).
+    d.checkKeys({"dimension", "kT", "cutoff", "seed", "weightExponent", "species", "pairCoeffs", "integrator",
+                 "bodyForce", "walls", "stability", "geometry", "geometryWall"});
+    DpdModel m;
+    m.dimension = d.getOrDefault<int>("dimension", 3);
+    if (m.dimension != 2 && m.dimension != 3) d.fail("dimension", "must be 2 or 3");
+    m.kT = d.getPositive<double>("kT");
+    m.cutoff = d.found("cutoff") ? d.getPositive<double>("cutoff") : 1.0;
+    m.weightExponent = d.found("weightExponent") ? d.getPositive<double>("weightExponent") : 2.0;
+    const long seed = d.getOrDefault<long>("seed", 1);
+    if (seed < 0) d.fail("seed", "must not be negative");
+    m.seed = static_cast<std::uint64_t>(seed);
+    m.species = readSpecies(d);
+    m.pairs = readPairs(d, m.species, m.pairNotes);
+    m.integrator = readIntegrator(d);
+    m.bodyForce = readBodyForce(d, m.dimension);
+    m.walls = readWalls(d, m.dimension, m.cutoff);
+    // Shardlow's splitting computes conservative forces only (PartialPairForces): it has no place yet
+    // for the tunable-slip wall's velocity-dependent force.
+    if (m.walls.anyTunableSlip() && m.integrator.type == "Shardlow")
+        d.subDict("integrator").fail("type", "the Shardlow integrator does not support tunableSlip walls yet: use "
+                                             "GrootWarren, DPDVV or Euler");
+    m.geometryWall = readGeometryWall(d, m.cutoff);
+    m.stability = readStability(d);
+    return m;
+}
+
+DpdModel readDpdProperties(const std::string& caseDir) {
+    DpdModel m = readDpdModel(Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string()));
+    m.geometryWall.caseDir = caseDir;
+    return m;
+}
+
+System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile) {
+    if (snapshot.box.dimension != model.dimension)
+        throw IoError(snapshotFile + ": the snapshot is " + std::to_string(snapshot.box.dimension) +
+                      "-D but constant/dpdProperties says dimension " + std::to_string(model.dimension));
+    // Map the snapshot's species numbering onto the model's, by name.
+    std::vector<std::uint8_t> map(snapshot.speciesNames.size());
+    for (std::size_t k = 0; k < snapshot.speciesNames.size(); ++k) {
+        const int idx = model.species.indexOf(snapshot.speciesNames[k]);
+        if (idx < 0)
+            throw IoError(snapshotFile + ": species '" + snapshot.speciesNames[k] +
+                          "' is not defined in constant/dpdProperties");
+        map[k] = static_cast<std::uint8_t>(idx);
+    }
+    System sys;
+    sys.box = snapshot.box;
+    sys.particles = std::move(snapshot.particles);
+    for (auto& s : sys.particles.species) s = map[s];
+    sys.species = model.species;
+    sys.pairs = model.pairs;
+    sys.forceParameters = {model.cutoff, model.weightExponent, model.kT, dt};
+    sys.seed = model.seed;
+    sys.bodyForce = model.bodyForce;
+    sys.walls = model.walls;
+    sys.step = snapshot.step;
+    sys.time = snapshot.time;
+    for (const auto& w : model.walls.walls())
+        for (int a = 0; a < 3; ++a)
+            if (sys.box.isActiveAxis(a) && (w.point[a] < sys.box.lo[a] || w.point[a] > sys.box.hi[a]))
+                throw IoError("constant/dpdProperties: wall '" + w.name + "' has its point outside the box of " + snapshotFile);
+    const std::string thin = model.walls.thinWall(sys.box, model.cutoff);
+    if (!thin.empty())
+        throw IoError("constant/dpdProperties: the solid behind wall '" + thin + "' is thinner than one cutoff inside the box of " +
+                      snapshotFile + " (fluid would interact through the wall across the periodic boundary)");
+    if (model.geometryWall.geometry) {
+        SolidRegion solid = readSolidRegion(*model.geometryWall.geometry, model.geometryWall.caseDir, sys.box, model.cutoff);
+        sys.geometryWall = std::make_shared<GeometryWall>(std::move(solid.distance), model.geometryWall.rule,
+                                                          model.geometryWall.layer);
+    }
+    sys.initialise();
+    return sys;
+}
+
+}  // namespace dpd

@@ -1,0 +1,158 @@
+#include "setup/RandomEquilWall.hpp"
+
+#include "core/Axis.hpp"
+#include "geometry/GeometryDictionary.hpp"
+#include "geometry/Percolation.hpp"
+#include "integrators/Integrator.hpp"
+#include "io/Dictionary.hpp"
+#include "case/BoxDictionary.hpp"
+#include "case/DpdProperties.hpp"
+#include "setup/InitialConditions.hpp"
+#include "setup/InitialFlow.hpp"
+#include "system/Monitors.hpp"
+#include "system/System.hpp"
+#include "core/ThreadBudget.hpp"
+
+#include <cmath>
+
+namespace dpd {
+
+namespace {
+
+int speciesOf(const Dictionary& parent, const std::string& key, const DpdModel& model, bool frozen) {
+    const Dictionary& d = parent.subDict(key);
+    d.checkKeys(frozen ? std::vector<std::string>{"species"}
+                       : std::vector<std::string>{"species", "density", "initialFlow"});
+    const std::string name = d.get<std::string>("species");
+    const int s = model.species.indexOf(name);
+    if (s < 0) d.fail("species", "'" + name + "' is not a species of constant/dpdProperties");
+    if (model.species[s].frozen != frozen)
+        d.fail("species", "'" + name + "' must " + (frozen ? "" : "not ") + "be frozen (see species in constant/dpdProperties)");
+    return s;
+}
+
+std::vector<int> drivingAxes(const Dictionary& d, const DpdModel& model) {
+    if (d.found("drivingAxis")) {
+        const std::string s = d.get<std::string>("drivingAxis");
+        if (s == "none") return {};
+        if (s != "x" && s != "y" && s != "z") d.fail("drivingAxis", "expected x, y, z or none, not '" + s + "'");
+        const int axis = s[0] - 'x';
+        if (model.dimension == 2 && axis == 1) d.fail("drivingAxis", "a 2-D scene lies in the x-z plane");
+        return {axis};
+    }
+    std::vector<int> axes;
+    if (model.bodyForce.active())
+        for (int a = 0; a < 3; ++a)
+            if (model.bodyForce.g[a] != 0.0) axes.push_back(a);
+    return axes;
+}
+
+void checkFlags(const SolidFlags& flags, const std::vector<int>& axes, const Dictionary& dict,
+                const Dictionary& geometryDict) {
+    if (flags.fluidCells() == 0)
+        geometryDict.fail("file", "the geometry has no fluid: every cell of the box is solid (check solidValues/solidBelow/"
+                                  "solidAbove, or the \"fluid\"/\"solid\" group)");
+    if (flags.fluidCells() == flags.grid().size())
+        geometryDict.fail("file", "the geometry has no solid: the whole box is fluid (nothing to freeze; use blockFrozenWall "
+                                  "without walls for a plain fluid)");
+    for (const int a : axes)
+        if (!fluidPercolates(flags, a)) {
+            const std::string message = std::string("the fluid does not percolate along ") + axisLetter(a) +
+                                        ": no fluid path crosses the periodic box along the driving axis";
+            if (dict.found("drivingAxis")) dict.fail("drivingAxis", message);
+            geometryDict.fail("file", message + " (the direction of bodyForce in constant/dpdProperties)");
+        }
+}
+
+// Runs the filled box as one fluid, without walls or body force, for the set time.
+void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, RandomEquilWallReport& report) {
+    const Dictionary& ed = dict.subDict("equilibration");
+    ed.checkKeys({"time", "deltaT"});
+    const double time = ed.getNonNegative<double>("time");
+    const double dt = ed.getPositive<double>("deltaT");
+    DpdModel fluidOnly = model;
+    fluidOnly.bodyForce = BodyForce{};
+    fluidOnly.walls = WallSet{};
+    fluidOnly.geometryWall = GeometryWallSettings{};  // the box is filled through the solid too
+    System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict");
+    const auto integrator = makeIntegrator(model.integrator);
+    useThreadsForParticles(sys.particles.size());
+    sys.sortByCell();
+    sys.computeForces();
+    report.equilibrationSteps = static_cast<std::size_t>(std::llround(time / dt));
+    for (std::size_t k = 0; k < report.equilibrationSteps; ++k) integrator->step(sys);
+    const MonitorReport m = monitor(sys, -1);
+    if (!m.finite) ed.fail("deltaT", "the equilibration went unstable (non-finite values): reduce deltaT");
+    report.equilibratedKT = m.kT;
+    snap.particles = std::move(sys.particles);
+}
+
+// Keeps the fluid (renumbered first) and the solid particles within one cutoff of the fluid.
+Particles freezeWall(const Particles& p, const SolidGeometry& geometry, double cutoff, int fluidSpecies,
+                     int wallSpecies, RandomEquilWallReport& report) {
+    std::vector<std::size_t> fluid, frozen;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Eigen::Vector3d r(p.rx[i], p.ry[i], p.rz[i]);
+        if (!geometry.isSolid(r)) fluid.push_back(i);
+        else if (geometry.signedDistance(r, 2.0 * cutoff).distance >= -cutoff) frozen.push_back(i);
+    }
+    Eigen::Vector3d mean(0, 0, 0);
+    for (const std::size_t i : fluid) mean += Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
+    if (!fluid.empty()) mean /= static_cast<double>(fluid.size());
+    Particles out;
+    out.reserve(fluid.size() + frozen.size());
+    for (const std::size_t i : fluid)
+        out.add(out.size(), fluidSpecies, p.rx[i], p.ry[i], p.rz[i], p.vx[i] - mean.x(), p.vy[i] - mean.y(), p.vz[i] - mean.z());
+    for (const std::size_t i : frozen) out.add(out.size(), wallSpecies, p.rx[i], p.ry[i], p.rz[i]);
+    report.fluid = fluid.size();
+    report.frozen = frozen.size();
+    report.dropped = p.size() - fluid.size() - frozen.size();
+    report.particlePorosity = static_cast<double>(fluid.size()) / static_cast<double>(p.size());
+    return out;
+}
+
+}  // namespace
+
+Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdProperties, const DpdModel& model,
+                              const std::string& caseDir, RandomEquilWallReport& report) {
+    dict.checkKeys({"box", "fluid", "wall", "equilibration", "drivingAxis"});
+    if (!model.walls.empty())
+        dpdProperties.fail("walls", "randomEquilWall builds the walls from the geometry block: remove the planar walls");
+    if (!dpdProperties.found("geometry"))
+        dpdProperties.fail("geometry", "randomEquilWall needs the shape of the solid: add a geometry { type imageMask; ... } "
+                                       "or geometry { type gmsh; ... } block");
+    const Dictionary& geometryDict = dpdProperties.subDict("geometry");
+    Snapshot snap;
+    snap.box = readBoxDictionary(dict, model.dimension, model.cutoff);
+    snap.speciesNames = model.species.names();
+    for (int s = 0; s < model.species.size(); ++s) snap.speciesFrozen.push_back(model.species[s].frozen);
+    const int fluidSpecies = speciesOf(dict, "fluid", model, false);
+    const int wallSpecies = speciesOf(dict, "wall", model, true);
+    const double density = dict.subDict("fluid").getPositive<double>("density");
+    report.drivingAxes = drivingAxes(dict, model);
+    const InitialFlow flow = readInitialFlow(dict.subDict("fluid"), model, snap.box, fluidSpecies, density);
+
+    // 1. The geometry and its flags, checked before any particle moves.
+    const SolidGeometry geometry = readGeometry(geometryDict, caseDir, snap.box, model.cutoff);
+    const SolidFlags flags(BackgroundGrid::covering(snap.box, readGridSpacing(geometryDict, model.cutoff),
+                                                    geometry.uniformAxis()), geometry);
+    report.gridPorosity = flags.porosity();
+    report.gridCells = flags.grid().n;
+    checkFlags(flags, report.drivingAxes, dict, geometryDict);
+
+    // 2. The whole box at the density, equilibrated as one fluid.
+    const PairRandom random(model.seed);
+    report.filled = fillRandom(snap.particles, snap.box, snap.box.lo, snap.box.hi, density, fluidSpecies,
+                               [](double, double, double) { return true; }, random, 0);
+    maxwellVelocities(snap.particles, 0, report.filled, model.dimension, model.kT, random);
+    equilibrate(snap, dict, model, report);
+
+    // 3. Freeze the wall, drop the rest of the solid.
+    snap.particles = freezeWall(snap.particles, geometry, model.cutoff, fluidSpecies, wallSpecies, report);
+    addInitialFlow(snap.particles, 0, report.fluid, flow);  // the fluid comes first
+    snap.time = 0.0;
+    snap.step = 0;
+    return snap;
+}
+
+}  // namespace dpd

@@ -1,0 +1,48 @@
+#pragma once
+// randomEquilWall: the initial state of a case with walls of any shape (docs/walls.md 3.2 steps 1-3),
+// from the geometry block of constant/dpdProperties (GeometryDictionary) and
+// system/randomEquilWallDict:
+//
+//   box           { min (-8 -1.5 -6); max (8 1.5 6); }   // the whole periodic box
+//   fluid         { species fluid; density 4; }   // optional initialFlow { type poiseuille; axis z;
+//                                                 // wallPositions (-20 20); } (setup/InitialFlow.hpp)
+//   wall          { species wall; }          // a frozen species: the particles kept in the solid
+//   equilibration { time 5; deltaT 0.02; }   // DPD run of the filled box: one fluid, no walls,
+//                                            // no body force, the integrator of dpdProperties
+//   drivingAxis   x;     // optional: the axis the flow must cross (percolation check); default
+//                        // every axis along which bodyForce of dpdProperties pushes; none: no check
+//
+// 1. flags the background grid solid or fluid; refuses a geometry with no fluid or no solid, and one
+//    whose fluid does not percolate along the driving axis;
+// 2. fills the whole box at the density (Maxwellian velocities at kT) and runs it to equilibrium;
+// 3. freezes the particles in the solid within one cutoff of the fluid (exact distance to the
+//    geometry's surface) as the wall species, at rest, and drops the deeper ones. The fluid keeps its
+//    equilibrated velocities less their mean (no net momentum), plus the initial flow if one is
+//    given. Ids are renumbered, fluid first.
+#include "io/Snapshot.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace dpd {
+
+class Dictionary;
+struct DpdModel;
+
+struct RandomEquilWallReport {
+    std::size_t filled = 0, fluid = 0, frozen = 0, dropped = 0;
+    double gridPorosity = 0.0;       // fluid fraction of the background grid's cells
+    double particlePorosity = 0.0;   // fluid / filled particles
+    double equilibratedKT = 0.0;     // kinetic temperature at the end of the equilibration
+    std::size_t equilibrationSteps = 0;
+    std::vector<int> drivingAxes;    // axes checked for percolation
+    std::array<int, 3> gridCells{1, 1, 1};
+};
+
+// dpdProperties: the dictionary of constant/dpdProperties (for its geometry block); model: the same
+// file read by readDpdModel. Input errors are InputErrors naming file, line and keyword.
+Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdProperties, const DpdModel& model,
+                              const std::string& caseDir, RandomEquilWallReport& report);
+
+}  // namespace dpd

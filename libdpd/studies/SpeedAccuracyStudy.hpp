@@ -1,0 +1,75 @@
+#pragma once
+// Speed against accuracy of the integrators: for each integrator and time step, on the standard fluid,
+// the kT error and the pressure (with their block standard errors), whether the run's monitor stopped
+// it, and the cost of one time unit (CPU seconds per particle per time unit: the work, robust to
+// other jobs on the machine); optionally the viscosity
+// from a reverse-Poiseuille run of the same integrator and step (studies/ViscosityProbe). Pressure
+// and viscosity errors are taken against a reference: the smallest step of the integrator named by
+// `reference`. Read from system/integratorSpeedAccuracyDict:
+//
+//   fluid       { particles 648; density 3; a 25; gamma 4.5; kT 1; seed 2; }
+//   integrators { GW065 { type GrootWarren; lambda 0.65; } VV { type DPDVV; } S1 { type Shardlow; } }
+//   deltaT      (0.01 0.02 0.04 0.06 0.08 0.1);
+//   reference   VV;        // its smallest deltaT is the reference for pressure and viscosity
+//   equilibrationTime 5;  productionTime 50;  blockTime 5;  maxKTRatio 2;
+//   viscosity                          // optional: no viscosity columns without it
+//   {
+//       lengthRatio 2;                 // box Lz / Lx (the fluid's cross-section, lengthRatio x particles)
+//       g 0.05;  bins 24;  exclude 1;  // force amplitude, profile bins along z, jump layers left out
+//       startNu 0.3;                   // optional: viscosity of the laminar start (default kinetic theory)
+//       equilibrationTime 5;  productionTime 50;  blockTime 5;
+//   }
+//
+// Every case starts from the same state: the fluid equilibrated from its random start by
+// Groot-Warren (lambda 0.65) at dt 0.01 for 1000 steps (one such state for each box).
+#include "integrators/Integrator.hpp"
+#include "studies/TemperatureProbe.hpp"
+#include "studies/ViscosityProbe.hpp"
+#include "setup/StandardFluid.hpp"
+
+#include <string>
+#include <vector>
+
+namespace dpd {
+
+class Dictionary;
+
+struct SpeedAccuracyCase {
+    std::string label;  // the name given in `integrators`
+    IntegratorSettings integrator;
+};
+
+struct SpeedAccuracySettings {
+    StandardFluidSettings fluid;
+    std::vector<SpeedAccuracyCase> integrators;
+    std::vector<double> deltaT;
+    std::string reference;  // the label whose smallest step is the reference for pressure and viscosity
+    TemperatureProbeSettings probe;  // with samplePressure on
+    bool viscosity = false;           // whether to run the viscosity probes
+    double viscosityLengthRatio = 2.0;
+    ViscosityProbeSettings viscosityProbe;
+};
+
+struct SpeedAccuracyRow {
+    std::string label;
+    double dt = 0.0;
+    TemperatureProbeResult result;
+    double secondsPerParticleTimeUnit = 0.0;  // production CPU time (all threads) / (particles x production time)
+    bool hasViscosity = false;
+    ViscosityProbeResult viscosity;
+};
+
+// Errors name the file, line and keyword.
+SpeedAccuracySettings readSpeedAccuracySettings(const Dictionary& d);
+
+// Runs every integrator at every step; `progress` gets one line per case.
+std::vector<SpeedAccuracyRow> runSpeedAccuracyStudy(const SpeedAccuracySettings& s, std::ostream& progress);
+
+// The table: one row per case, columns
+//   integrator dt kTError kTErrorSE pressure pressureSE pressureError pressureErrorSE
+//   nu nuSE nuError nuErrorSE secondsPerParticleTimeUnit unstable unstableAfter
+// errors relative (kT against the set kT; pressure and nu against the reference row, their errors
+// the two standard errors added in quadrature); nan where not measured.
+std::string speedAccuracyTable(const std::vector<SpeedAccuracyRow>& rows, const SpeedAccuracySettings& s);
+
+}  // namespace dpd

@@ -1,0 +1,142 @@
+#include "system/System.hpp"
+
+#include "forces/PairForceLoop.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace dpd {
+
+namespace {
+
+template <bool kConservative, bool kStandardWeight>
+void pairKernel(Particles& p, const PairLoopContext& ctx, const PairForceParameters& params) {
+    const DpdPairEvaluator<kConservative, kStandardWeight> eval(params);
+    accumulatePairForces(p, ctx, eval, params.cutoff);
+}
+
+// Adds the seconds from construction to destruction to *total, when total is set.
+class ScopedTimer {
+public:
+    explicit ScopedTimer(double* total) : total_(total) {
+        if (total_) start_ = std::chrono::steady_clock::now();
+    }
+    ~ScopedTimer() {
+        if (total_) *total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    double* total_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace
+
+void System::initialise() {
+    if (forceParameters.cutoff <= 0.0) throw std::invalid_argument("the cutoff must be positive");
+    if (forceParameters.dt <= 0.0) throw std::invalid_argument("deltaT must be positive");
+    if (forceParameters.kT < 0.0) throw std::invalid_argument("kT must not be negative");
+    frozenOfSpecies_.assign(species.size(), 0);
+    for (int s = 0; s < species.size(); ++s) frozenOfSpecies_[s] = species[s].frozen ? 1 : 0;
+    // Fluctuation-dissipation fixes sigma; frozen particles never interact with each other.
+    PairTable table(species.size());
+    for (int a = 0; a < species.size(); ++a)
+        for (int b = a; b < species.size(); ++b) {
+            PairCoeffs c = pairs(a, b);
+            c.sigma = std::sqrt(2.0 * c.gamma * forceParameters.kT);
+            if (species[a].frozen && species[b].frozen) c.interact = false;
+            table.set(a, b, c);
+        }
+    pairs = table;
+    random_ = PairRandom(seed);
+    cells_.setup(box, forceParameters.cutoff);
+    conservative_ = pairs.anyConservative();
+    tunableSlipWalls_ = walls.anyTunableSlip();
+    const bool standardWeight = forceParameters.weightExponent == 2.0;
+    if (conservative_) pairKernel_ = standardWeight ? &pairKernel<true, true> : &pairKernel<true, false>;
+    else pairKernel_ = standardWeight ? &pairKernel<false, true> : &pairKernel<false, false>;
+    if (box.dimension == 2)
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            particles.ry[i] = 0.5 * (box.lo.y() + box.hi.y());
+            particles.vy[i] = 0.0;
+        }
+    frozenPerWall_ = walls.assignFrozenVelocities(particles, frozenOfSpecies_);
+    wrapPositions();
+    if (geometryWall) geometryWall->recordPositions(particles, frozenOfSpecies_);
+    initialised_ = true;
+}
+
+void System::wrapPositions() {
+    const ScopedTimer timer(stepTimes ? &stepTimes->wrap : nullptr);
+    const long n = static_cast<long>(particles.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) box.wrapPoint(particles.rx[i], particles.ry[i], particles.rz[i]);
+}
+
+void System::sortByCell(SortForces forces) {
+    const ScopedTimer timer(stepTimes ? &stepTimes->sort : nullptr);
+    // A second sort would have to compose the two orders to find the forces again.
+    if (forces == SortForces::Leave && forcesLeftBySort_)
+        throw std::logic_error("System::sortByCell: the forces the last sort left behind were never computed again");
+    cells_.sortParticles(particles, frozenOfSpecies_, forces);
+    forcesLeftBySort_ = forces == SortForces::Leave;
+}
+
+void System::computeForces() { computeForces(0.0); }
+
+void System::computeForces(double predictorShift) {
+    if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
+    if (predictorShift != 0.0 && hasVelocityDependentNonPairForces())
+        throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with tunable-slip walls");
+    const ScopedTimer timer(stepTimes ? &stepTimes->forces : nullptr);
+    // The pair loop writes its forces over the old ones (with a predictor after reading them): no
+    // pass clearing them first. The other forces are added to them.
+    const std::uint32_t* forceOrder = forcesLeftBySort_ ? cells_.order().data() : nullptr;
+    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step),
+                              {predictorShift, &frozenOfSpecies_, forceOrder}, true};
+    pairKernel_(particles, ctx, forceParameters);
+    forcesLeftBySort_ = false;  // written over by the pair forces
+    bodyForce.apply(particles, frozenOfSpecies_, box);
+    if (tunableSlipWalls_)
+        walls.addTunableSlipForces(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
+                                   forceParameters.kT, forceParameters.dt);
+}
+
+WallCounters System::applyWalls() {
+    if (walls.empty() && !geometryWall) return {};
+    const ScopedTimer timer(stepTimes ? &stepTimes->walls : nullptr);
+    WallCounters counts;
+    if (!walls.empty())
+        counts = walls.reflect(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
+                               forceParameters.kT, deferredBounces_);
+    if (geometryWall) {
+        const GeometryWallCounts g = geometryWall->reflect(particles, frozenOfSpecies_, box, random_,
+                                                           static_cast<std::uint64_t>(step), forceParameters.kT);
+        counts.reflected.resize(walls.size(), 0);
+        counts.crossed.resize(walls.size(), 0);
+        counts.reflected.push_back(g.returned);
+        counts.crossed.push_back(g.crossed);
+        counts.insideAfter += g.insideAfter;
+    }
+    return counts;
+}
+
+void System::completeWalls() {
+    walls.completeBounceForward(particles, box, deferredBounces_);
+    deferredBounces_.clear();
+    // The geometry wall follows each particle's path through the next step from here.
+    if (geometryWall) geometryWall->recordPositions(particles, frozenOfSpecies_);
+}
+
+bool System::isInsideSolid(double x, double y, double z) const {
+    return walls.isInsideSolid(x, y, z) || (geometryWall && geometryWall->isInsideSolid(x, y, z));
+}
+
+std::size_t System::countMobile() const {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < particles.size(); ++i) n += isFrozen(i) ? 0 : 1;
+    return n;
+}
+
+}  // namespace dpd

@@ -1,0 +1,125 @@
+#pragma once
+// fitSlipLength: viscosity and wall slip from a profile table written by profileBins, as set in
+// system/fitSlipLengthDict:
+//
+//   mode       poiseuille;      // poiseuille | reversePoiseuille | couette
+//   profile    channelProfile;  // the table postProcessing/profileBins/<time>/<profile>.dat
+//   component  x;               // the velocity component along the flow; default: the direction of
+//                               // the body force (when it has exactly one nonzero component)
+//   exclude    0;               // poiseuille: distance from each wall left out of the fit (default 0);
+//                               // reversePoiseuille: half-width of the band left out around the
+//                               // planes where the force jumps (default 1);
+//                               // couette: distance from each wall left out (default 1 cutoff)
+//   fitRange   (-10 10);        // couette only, instead of exclude: the range of the profile axis
+//                               // the line is fitted over
+//   slipPredictionNu 0.3;       // optional: the kinematic viscosity for the predicted slip length of
+//                               // tunable-slip walls (default: the fit's own nu)
+//   wallPositions (-20 20);     // poiseuille, couette: the channel's walls along the profile's axis
+//                               // when they are not planar walls of dpdProperties but the solid of a
+//                               // geometry block (randomEquilWall); such walls are at rest. An error
+//                               // when the case has planar walls along that axis (theirs are used)
+//
+// When a channel wall has tunable slip (walls/TunableSlipWall.hpp) the predicted slip length is written
+// beside the measured one (analysis/TunableSlipPrediction.hpp): slipLengthPredicted (lower upper).
+//
+// poiseuille: the walls are the two planar walls of constant/dpdProperties whose normals lie along
+// the profile's axis; g is the uniform body force's component along `component`, and the walls'
+// velocities along it give the slip velocities (PoiseuilleFit.hpp: fitPoiseuille).
+// reversePoiseuille: g from the reversePoiseuille body force; the box along the gradient axis is
+// taken from the profile's bins (first centre - half a bin to last centre + half a bin), so the bins
+// must cover the whole box (fitReversePoiseuille).
+//
+// couette: no body force; the same two walls, sliding (the component defaults to the one axis along
+// which the walls move); a line is fitted over the central part (CouetteFit.hpp: fitCouette). When
+// the table has the shear stress column sigma<component><axis> (binnedProfile with stress yes), the
+// viscosity is <sigma> / shear rate over the fitted range, and nu = eta / rho with rho the central
+// density.
+//
+// Bins with fewer than 3 particle-samples (no velocity) are left out. When the error column is all
+// zero (a snapshot profile) the fit uses unit weights and scales the covariance by chi2/dof; when only
+// some errors are zero, those bins are left out (too few blocks saw particles there) and counted.
+//
+// Results: postProcessing/fitSlipLength/<time>/fit.dat, a dictionary. Every selected time is fitted
+// before anything is written, so an error leaves the case as it was.
+#include "analysis/CouetteFit.hpp"
+#include "analysis/PoiseuilleFit.hpp"
+#include "analysis/TunableSlipPrediction.hpp"
+#include "io/Dictionary.hpp"
+#include "case/DpdProperties.hpp"
+#include "sampling/ProfileTable.hpp"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace dpd {
+
+enum class FitSlipLengthMode { poiseuille, reversePoiseuille, couette };
+
+// The dictionary with the model it refers to; read once, used for every time.
+struct FitSlipLengthSetup {
+    Dictionary dict;                  // system/fitSlipLengthDict (errors point into it)
+    Dictionary dpdProperties;         // constant/dpdProperties (errors about walls and body force)
+    DpdModel model;
+    FitSlipLengthMode mode = FitSlipLengthMode::poiseuille;
+    std::string profile;              // table name without .dat
+    int component = -1;               // -1 until resolved from the body force
+    double exclude = 0.0;
+    bool hasFitRange = false;         // couette: fitRange given
+    double fitLow = 0.0, fitHigh = 0.0;
+    double slipPredictionNu = 0.0;    // > 0: slipPredictionNu given
+    bool hasWallPositions = false;    // wallPositions given: walls of a geometry, at rest
+    double wallLow = 0.0, wallHigh = 0.0;
+};
+
+// Checks keywords (unknown ones, mode, component, exclude) and resolves the component and the body
+// force; InputError naming the file, line and keyword.
+FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictionary& dpdProperties);
+
+struct FitSlipLengthResult {
+    FitSlipLengthMode mode = FitSlipLengthMode::poiseuille;
+    std::string time;
+    std::string profileFile;
+    int axis = 2;             // the profile's axis
+    int component = 0;        // the fitted velocity component
+    double g = 0.0;           // body force along the component
+    double exclude = 0.0;
+    int pointsUsed = 0;       // bins handed to the fit (before its own range selection)
+    int binsWithoutVelocity = 0;  // fewer than 3 particle-samples: left out
+    int binsWithoutError = 0;     // zero error among positive ones: left out
+    PoiseuilleFitResult poiseuille;     // mode poiseuille
+    ReversePoiseuilleResult reverse;    // mode reversePoiseuille
+    CouetteFitResult couette;           // mode couette
+    bool hasStress = false;             // couette: the table had the shear stress column
+    std::string stressColumn;
+    StressViscosity stress;
+    double boxLow = 0.0, boxLength = 0.0;  // reversePoiseuille: the periodic box along the axis
+    // Kinetic-theory estimate for reference (NaN when there is no pair of mobile species).
+    double densityCentral = 0.0;  // count-weighted mean density of the central half of the bins
+    double gamma = 0.0;
+    double nuKineticTheory = 0.0;
+    TunableSlipPrediction slipPrediction;  // channel modes with tunable-slip walls
+};
+
+// Fits one profile table. InputError (naming fitSlipLengthDict or dpdProperties) when the setup does
+// not fit the table or the fit cannot be made (too few points), IoError for a missing column.
+FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& setup, const ProfileTableData& table,
+                                  const std::string& time = "");
+
+// The result as the dictionary written to fit.dat.
+Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r);
+void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r);
+
+struct FitSlipLengthOptions {
+    std::string caseDir = ".";
+    std::string time;
+    bool latestTime = false;
+};
+
+// The whole tool: reads the dictionary and constant/dpdProperties, fits every selected time, then
+// writes <case>/postProcessing/fitSlipLength/<time>/fit.dat and prints each result. In the default
+// selection (every time but 0) times without the profile table are skipped, as long as one has it;
+// a time named by -time or -latestTime must have it.
+std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& options, std::ostream& out);
+
+}  // namespace dpd

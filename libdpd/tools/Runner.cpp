@@ -1,0 +1,231 @@
+#include "tools/Runner.hpp"
+
+#include "core/Error.hpp"
+#include "integrators/Integrator.hpp"
+#include "io/Snapshot.hpp"
+#include "io/TimeDirectories.hpp"
+#include "case/ControlDict.hpp"
+#include "case/DpdProperties.hpp"
+#include "system/Monitors.hpp"
+#include "system/System.hpp"
+#include "core/ThreadBudget.hpp"
+#include "sampling/FunctionObjects.hpp"
+
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+namespace dpd {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string startTimeName(const std::string& caseDir, const RunControl& control) {
+    const auto times = listTimes(caseDir);
+    if (times.empty()) throw IoError(caseDir + ": no time directory to start from (run blockFrozenWall first?)");
+    if (control.startFrom == "latestTime") return times.back().name;
+    for (const auto& t : times)
+        if (std::abs(t.value - control.startTime) <= 1e-9 * std::max(1.0, control.startTime)) return t.name;
+    throw IoError(caseDir + ": startTime " + timeName(control.startTime) + " has no time directory");
+}
+
+bool forcesStored(const Particles& p) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.fx[i] != 0.0 || p.fy[i] != 0.0 || p.fz[i] != 0.0) return true;
+    return false;
+}
+
+std::string vectorText(const Eigen::Vector3d& v) {
+    std::ostringstream os;
+    os << std::setprecision(6) << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
+    return os.str();
+}
+
+std::string clockText(double seconds) {
+    const long s = static_cast<long>(std::max(0.0, seconds));
+    std::ostringstream os;
+    os << std::setfill('0') << std::setw(2) << s / 3600 << ":" << std::setw(2) << (s / 60) % 60 << ":" << std::setw(2)
+       << s % 60;
+    return os.str();
+}
+
+Snapshot snapshotOf(const System& sys) {
+    Snapshot s;
+    s.box = sys.box;
+    s.particles = sys.particles;
+    s.speciesNames = sys.species.names();
+    for (int k = 0; k < sys.species.size(); ++k) s.speciesFrozen.push_back(sys.species[k].frozen);
+    s.time = sys.time;
+    s.step = sys.step;
+    return s;
+}
+
+void printWalls(std::ostream& log, const System& sys) {
+    for (std::size_t w = 0; w < sys.walls.size(); ++w) {
+        const PlanarWall& wall = sys.walls[w];
+        log << "    " << wall.name << ": reflection " << reflectionRuleName(wall.rule);
+        if (wall.rule == ReflectionRule::bounceLayer) log << " (layer " << wall.layer << ")";
+        if (wall.hasTunableSlip) {
+            const TunableSlipParameters& t = wall.tunableSlip;
+            log << ", tunable slip (gammaL " << t.gammaL << ", zc " << t.zc << ", WCA epsilon " << t.epsilon
+                << ", sigma " << t.sigma << ")";
+        }
+        log << ", velocity " << vectorText(wall.velocity) << ", " << sys.frozenPerWall()[w]
+            << " frozen particles moving with it\n";
+    }
+    if (sys.geometryWall) {
+        const GeometryWall& g = *sys.geometryWall;
+        log << "    geometry: reflection " << reflectionRuleName(g.rule());
+        if (g.rule() == ReflectionRule::bounceLayer) log << " (layer " << g.layer() << ")";
+        log << ", distance field " << g.field().grid().n[0] << " x " << g.field().grid().n[1] << " x "
+            << g.field().grid().n[2] << " cells\n";
+    }
+}
+
+void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const ThreadUse& threads,
+                 const Integrator& integrator,
+                 const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes) {
+    const std::size_t mobile = sys.countMobile();
+    log << "Case           : " << caseDir << "\n"
+        << "Threads        : " << threads.used << " of " << threads.available
+        << (threads.used < threads.available ? " (fewer particles than " + std::to_string(kParticlesPerThread) +
+                                                   " per thread: more would wait on each other)"
+                                             : std::string())
+        << "\n"
+        << "Dimension      : " << sys.box.dimension << "\n"
+        << "Particles      : " << sys.particles.size() << " (" << mobile << " mobile, "
+        << sys.particles.size() - mobile << " frozen)\n"
+        << "Integrator     : " << integrator.name() << ", deltaT " << control.deltaT << "\n"
+        << "Pair force     : dissipative + random" << (sys.usesConservativeForce() ? " + conservative" : "")
+        << (sys.forceParameters.weightExponent == 2.0 ? "" : ", generalised weight") << "\n"
+        << "Walls          : " << sys.walls.size() + (sys.geometryWall ? 1 : 0) << "\n";
+    printWalls(log, sys);
+    for (const std::string& note : pairNotes) log << "Pair mixed     : " << note << "\n";
+    log << "Body force     : " << (sys.bodyForce.active() ? vectorText(sys.bodyForce.g) : std::string("none")) << "\n"
+        << "Sampling       : " << nFunctions << " function object(s)\n\n";
+}
+
+class RunLoop {
+public:
+    RunLoop(const std::string& caseDir, std::ostream& log) : caseDir_(caseDir), log_(log) {}
+
+    void run() {
+        // Everything is read and checked before anything is written.
+        const RunControl control = readControlDict(caseDir_);
+        const DpdModel model = readDpdProperties(caseDir_);
+        const std::string start = startTimeName(caseDir_, control);
+        const std::string snapshotFile = (fs::path(caseDir_) / start / "particles.h5").string();
+        System sys = buildSystem(model, readSnapshot(snapshotFile), control.deltaT, snapshotFile);
+        FunctionObjects functions = FunctionObjects::read(control.functions, sys);
+        const auto integrator = makeIntegrator(model.integrator);
+        if (sys.time > 0.0) functions.restore((fs::path(caseDir_) / start).string());
+        const ThreadUse threads = useThreadsForParticles(sys.particles.size());
+        const bool restartForces = forcesStored(sys.particles);
+        sys.sortByCell();
+        if (!restartForces) sys.computeForces();
+        printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes);
+        log_.flush();  // the set-up shows in a log file at once, not with the first report
+        loop(sys, control, model, functions, *integrator);
+    }
+
+private:
+    void loop(System& sys, const RunControl& control, const DpdModel& model, FunctionObjects& functions,
+              Integrator& integrator) {
+        const FlowAxes flowAxes = flowAxesOf(sys);
+        const auto nSteps = static_cast<std::int64_t>(std::llround((control.endTime - sys.time) / control.deltaT));
+        const std::int64_t firstStep = sys.step;
+        lastGood_ = snapshotOf(sys);
+        WallCounters interval;
+        const auto t0 = Clock::now();
+        auto tReport = t0;
+        std::int64_t stepsAtReport = 0;
+        for (std::int64_t k = 1; k <= nSteps; ++k) {
+            interval.accumulate(integrator.step(sys));
+            functions.execute(sys);
+            const bool report = k % control.reportIntervalSteps == 0 || k == nSteps;
+            if (report) {
+                const auto now = Clock::now();
+                const double elapsed = std::chrono::duration<double>(now - t0).count();
+                const double rate = (k - stepsAtReport) / std::chrono::duration<double>(now - tReport).count();
+                tReport = now;
+                stepsAtReport = k;
+                const MonitorReport m = monitor(sys, flowAxes);
+                printReport(sys, m, interval, elapsed, rate, nSteps - k);
+                interval = WallCounters();
+                checkStability(sys, m, model);
+                lastGood_ = snapshotOf(sys);
+            }
+            if ((sys.step - firstStep) % control.writeIntervalSteps == 0 || k == nSteps) write(sys, functions);
+        }
+        const double total = std::chrono::duration<double>(Clock::now() - t0).count();
+        log_ << "\nRun finished: " << nSteps << " steps in " << std::setprecision(4) << total << " s, "
+             << std::setprecision(4) << (total > 0 ? sys.particles.size() * nSteps / total : 0.0)
+             << " particle-steps/s\nEnd\n";
+    }
+
+    void printReport(const System& sys, const MonitorReport& m, const WallCounters& walls, double elapsed,
+                     double stepsPerSecond, std::int64_t stepsLeft) {
+        log_ << "Time = " << timeName(sys.time) << "  (step " << sys.step << ")\n"
+             << "    kT = " << std::setprecision(6) << m.kT << "   momentum = " << vectorText(m.momentum)
+             << "   meanVelocity = " << vectorText(m.meanVelocity) << "\n";
+        if (!sys.walls.empty() || sys.geometryWall) {
+            // Since the last report: particles each wall's rule returned, and particles found behind
+            // its plane after a move (for a bounce layer each of these is a failure of the layer).
+            log_ << "    walls since last report:";
+            for (std::size_t w = 0; w < sys.walls.size(); ++w)
+                log_ << " " << sys.walls[w].name << " returned " << (w < walls.reflected.size() ? walls.reflected[w] : 0)
+                     << " crossed " << (w < walls.crossed.size() ? walls.crossed[w] : 0) << ";";
+            const std::size_t g = sys.walls.size();  // the geometry wall's counts come last
+            if (sys.geometryWall)
+                log_ << " geometry returned " << (g < walls.reflected.size() ? walls.reflected[g] : 0) << " crossed "
+                     << (g < walls.crossed.size() ? walls.crossed[g] : 0) << ";";
+            log_ << " left inside after a step " << walls.insideAfter << "; inside walls now " << m.insideWalls << "\n";
+        }
+        log_ << "    ExecutionTime = " << std::setprecision(5) << elapsed << " s   steps/s = " << std::setprecision(4)
+             << stepsPerSecond << "   particle-steps/s = " << std::setprecision(4)
+             << stepsPerSecond * sys.particles.size() << "   time left = " << clockText(stepsLeft / stepsPerSecond)
+             << "\n\n";
+        log_.flush();
+    }
+
+    void checkStability(const System& sys, const MonitorReport& m, const DpdModel& model) {
+        std::string problem;
+        if (!m.finite) problem = "non-finite positions, velocities or forces (NaN or infinity)";
+        else if (m.kT > model.stability.maxKTRatio * model.kT)
+            problem = "kT = " + std::to_string(m.kT) + " exceeds maxKTRatio x kT = " +
+                      std::to_string(model.stability.maxKTRatio * model.kT) + " (temperature runaway: is deltaT too large?)";
+        else if (m.insideWalls > model.stability.maxInsideWalls)
+            problem = std::to_string(m.insideWalls) + " particles found inside walls (allowed: " +
+                      std::to_string(model.stability.maxInsideWalls) + ")";
+        if (problem.empty()) return;
+        const std::string dir = (fs::path(caseDir_) / timeName(lastGood_.time)).string();
+        writeSnapshot(dir, lastGood_);
+        throw InstabilityError("the run went unstable at time " + timeName(sys.time) + " (step " +
+                               std::to_string(sys.step) + "): " + problem + ". The last good state, time " +
+                               timeName(lastGood_.time) + ", is written to " + dir);
+    }
+
+    void write(const System& sys, const FunctionObjects& functions) {
+        const std::string dir = (fs::path(caseDir_) / timeName(sys.time)).string();
+        writeSnapshot(dir, snapshotOf(sys));
+        functions.write(dir, sys);
+        log_ << "Writing time " << timeName(sys.time) << "\n";
+    }
+
+    std::string caseDir_;
+    std::ostream& log_;
+    Snapshot lastGood_;
+};
+
+}  // namespace
+
+void runCase(const std::string& caseDir, std::ostream& log) { RunLoop(caseDir, log).run(); }
+
+}  // namespace dpd
