@@ -162,7 +162,9 @@ SimplexMesh buildMesh(const std::string& file, const RawElements& raw, const Geo
         mesh.inverse.push_back(edges.inverse());
     }
     if (mesh.simplices.empty()) fail(file, "the \"fluid\"/\"solid\" group has no elements after meshing");
-    const double tol = 1e-6 * frame.period.head(mesh.dimension).maxCoeff();
+    // A plain maximum: Eigen's vectorised maxCoeff over a dynamic block trips GCC 12's
+    // -Wmaybe-uninitialized inside its AVX-512 intrinsics.
+    const double tol = 1e-6 * std::max(frame.period[0], mesh.dimension == 3 ? std::max(frame.period[1], frame.period[2]) : frame.period[1]);
     for (const auto& s : mesh.simplices)
         for (int c = 0; c < raw.corners; ++c)
             for (int a = 0; a < mesh.dimension; ++a) {
