@@ -22,14 +22,14 @@ namespace dpd {
 // A frozen particle never moves: it is a particle of infinite mass, 1/m = 0. For a frozen-fluid pair
 // the reduced mass is then the fluid particle's mass, mu = m_i, and the whole change du goes to the
 // fluid particle (dv_i = du e) while the frozen one keeps its (wall) velocity. All masses are 1 here.
-void shardlowSweep(System& sys, double dt, std::uint32_t sweep) {
+namespace {
+
+template <class Weight>
+void sweepWithWeight(System& sys, const Weight& weight, double dt, std::uint32_t sweep) {
     Particles& p = sys.particles;
     const PairTable& table = sys.pairs;
     const auto& frozen = sys.frozenOfSpecies();
     const double kT = sys.forceParameters.kT;
-    const double invCutoff = 1.0 / sys.forceParameters.cutoff;
-    const double exponent = sys.forceParameters.weightExponent;
-    const bool standardWeight = exponent == 2.0;
     const std::uint64_t step = static_cast<std::uint64_t>(sys.step);
     const PairRandom& random = sys.random();
     const std::uint32_t stream = kStreamShardlowSweep + 0x10u * sweep;  // distinct from all RandomStream values
@@ -43,8 +43,7 @@ void shardlowSweep(System& sys, double dt, std::uint32_t sweep) {
         const double invMassJ = frozen[p.species[j]] ? 0.0 : 1.0;
         const double invMu = invMassI + invMassJ;
         const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-        const double w = 1.0 - r * invCutoff;
-        const double wD = standardWeight ? w * w : std::pow(w, exponent);
+        const double wD = weight.at(r).wD;
         // decay - 1 = e^(-kappa dt) - 1, and 1 - decay^2 = -(decay - 1)(decay + 1), accurate for small kappa dt.
         const double decayMinusOne = std::expm1(-c.gamma * wD * invMu * dt);
         const double spread = std::sqrt(-kT * invMu * decayMinusOne * (2.0 + decayMinusOne));
@@ -62,6 +61,12 @@ void shardlowSweep(System& sys, double dt, std::uint32_t sweep) {
         for (std::size_t k = 0; k < n; ++k) b.zeta[k] = random.pairGaussian(step, p.id[b.i[k]], p.id[b.j[k]], stream);
         for (std::size_t k = 0; k < n; ++k) update(b.i[k], b.j[k], b.dx[k], b.dy[k], b.dz[k], b.zeta[k]);
     });
+}
+
+}  // namespace
+
+void shardlowSweep(System& sys, double dt, std::uint32_t sweep) {
+    withDpdWeight(sys.forceParameters, [&](const auto& weight) { sweepWithWeight(sys, weight, dt, sweep); });
 }
 
 }  // namespace dpd

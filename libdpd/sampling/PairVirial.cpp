@@ -64,7 +64,7 @@ void cellPairVirial(const System& sys, const BinLayout& L, const Evaluator& eval
             const PairCoeffs& c = sys.pairs(p.species[i], p.species[j]);
             if (!c.interact) continue;
             const double rDotV = r.x() * (p.vx[i] - p.vx[j]) + r.y() * (p.vy[i] - p.vy[j]) + r.z() * (p.vz[i] - p.vz[j]);
-            const double s = eval.forceOverR(r2, rDotV, c, 0.0);  // zeta = 0: no random force (see header)
+            const double s = eval.forceOverR(r2, rDotV, c, 0.0);  // the evaluator has no random term (see header)
             const SymmetricTensor w{s * r.x() * r.x(), s * r.y() * r.y(), s * r.z() * r.z(),
                                     s * r.x() * r.y(), s * r.x() * r.z(), s * r.y() * r.z()};
             forEachSegmentShare(L, boxLo, boxLength, rj[axis], ri[axis], [&](int k, double fraction) {
@@ -114,9 +114,10 @@ void addSegmentShares(const BinLayout& L, double boxLo, double boxLength, double
 }
 
 std::vector<SymmetricTensor> binnedPairVirial(const System& sys, const BinLayout& layout) {
-    if (sys.forceParameters.weightExponent == 2.0)
-        return traverse(sys, layout, DpdPairEvaluator<true, true>(sys.forceParameters));
-    return traverse(sys, layout, DpdPairEvaluator<true, false>(sys.forceParameters));
+    return withDpdWeight(sys.forceParameters, [&](auto weight) {
+        const DpdPairTerms<kConservativeTerm | kDissipativeTerm, decltype(weight)> deterministic(weight, sys.forceParameters);
+        return traverse(sys, layout, deterministic);
+    });
 }
 
 }  // namespace dpd

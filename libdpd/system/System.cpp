@@ -10,10 +10,19 @@ namespace dpd {
 
 namespace {
 
-template <bool kConservative, bool kStandardWeight>
+using PairKernelFunction = void (*)(Particles&, const PairLoopContext&, const PairForceParameters&);
+
+template <class Evaluator>
 void pairKernel(Particles& p, const PairLoopContext& ctx, const PairForceParameters& params) {
-    const DpdPairEvaluator<kConservative, kStandardWeight> eval(params);
+    const Evaluator eval(params);
     accumulatePairForces(p, ctx, eval, params.cutoff);
+}
+
+template <unsigned kTerms>
+PairKernelFunction pairKernelFor(const PairForceParameters& params) {
+    return withDpdWeight(params, [](auto weight) -> PairKernelFunction {
+        return &pairKernel<DpdPairTerms<kTerms, decltype(weight)>>;
+    });
 }
 
 // Adds the seconds from construction to destruction to *total, when total is set.
@@ -53,9 +62,8 @@ void System::initialise() {
     cells_.setup(box, forceParameters.cutoff);
     conservative_ = pairs.anyConservative();
     tunableSlipWalls_ = walls.anyTunableSlip();
-    const bool standardWeight = forceParameters.weightExponent == 2.0;
-    if (conservative_) pairKernel_ = standardWeight ? &pairKernel<true, true> : &pairKernel<true, false>;
-    else pairKernel_ = standardWeight ? &pairKernel<false, true> : &pairKernel<false, false>;
+    pairKernel_ = conservative_ ? pairKernelFor<kConservativeTerm | kDissipativeTerm | kRandomTerm>(forceParameters)
+                                : pairKernelFor<kDissipativeTerm | kRandomTerm>(forceParameters);
     if (box.dimension == 2)
         for (std::size_t i = 0; i < particles.size(); ++i) {
             particles.ry[i] = 0.5 * (box.lo.y() + box.hi.y());

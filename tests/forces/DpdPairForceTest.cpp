@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 
 using namespace dpd;
 
@@ -226,4 +227,47 @@ TEST(DpdPairForce, NewtonsThirdLawInASystem) {
         EXPECT_GT(f0.norm(), 1.0) << c[0].transpose();  // they do interact
         EXPECT_LE((f0 + f1).norm(), 1e-14 * f0.norm()) << c[0].transpose();
     }
+}
+
+// DPD-VV evaluates the force in parts (conservative, then dissipative) and the virial without the
+// random term: each part is the whole force's term, so the parts add up to the whole to round-off,
+// for the standard and a generalised weight, and the weight's values are those the sweep uses.
+template <class Weight>
+void expectPartsAddUpToTheWhole(double s) {
+    const PairForceParameters p = params(0.04, s);
+    const DpdPairTerms<kConservativeTerm | kDissipativeTerm | kRandomTerm, Weight> whole(p);
+    const DpdPairTerms<kConservativeTerm, Weight> conservative(p);
+    const DpdPairTerms<kDissipativeTerm, Weight> dissipative(p);
+    const DpdPairTerms<kRandomTerm, Weight> random(p);
+    const DpdPairTerms<kConservativeTerm | kDissipativeTerm, Weight> deterministic(p);
+    const PairCoeffs c{25.0, 4.5, 3.0, true};
+    for (double r : {0.05, 0.3, 0.5, 0.77, 0.999})
+        for (double rDotV : {-0.7 * r, 0.4 * r})
+            for (double zeta : {-1.3, 0.6}) {
+                const double sum = conservative.forceOverR(r * r, rDotV, c, zeta) +
+                                   dissipative.forceOverR(r * r, rDotV, c, zeta) + random.forceOverR(r * r, rDotV, c, zeta);
+                const double all = whole.forceOverR(r * r, rDotV, c, zeta);
+                // Each term is O(100) at most (a w / r at r = 0.05 is 475): a few ulps of the largest.
+                EXPECT_NEAR(sum, all, 1e-12 * 500.0) << "s = " << s << ", r = " << r;
+                EXPECT_NEAR(deterministic.forceOverR(r * r, rDotV, c, zeta) + random.forceOverR(r * r, rDotV, c, zeta), all,
+                            1e-12 * 500.0);
+                // A term the evaluator does not have is not computed: zeta and v do not reach the conservative part.
+                EXPECT_EQ(conservative.forceOverR(r * r, rDotV, c, zeta), conservative.forceOverR(r * r, 0.0, c, 0.0));
+            }
+    EXPECT_FALSE(decltype(conservative)::kUsesRandom || decltype(conservative)::kUsesVelocity);
+    EXPECT_FALSE(decltype(deterministic)::kUsesRandom);
+    EXPECT_TRUE(decltype(whole)::kUsesRandom && decltype(whole)::kUsesVelocity);
+    const Weight weight(p);
+    EXPECT_NEAR(weight.at(0.5).wD, std::pow(0.5, s), 1e-14);
+}
+
+TEST(DpdPairForce, ThePartsAddUpToTheWhole) {
+    expectPartsAddUpToTheWhole<DpdWeight<true>>(2.0);
+    expectPartsAddUpToTheWhole<DpdWeight<false>>(1.0);
+    expectPartsAddUpToTheWhole<DpdWeight<false>>(0.5);
+}
+
+TEST(DpdPairForce, TheWeightIsChosenByTheExponent) {
+    EXPECT_TRUE(withDpdWeight(params(0.04, 2.0), [](auto w) { return std::is_same_v<decltype(w), DpdWeight<true>>; }));
+    EXPECT_TRUE(withDpdWeight(params(0.04, 1.5), [](auto w) { return std::is_same_v<decltype(w), DpdWeight<false>>; }));
 }
