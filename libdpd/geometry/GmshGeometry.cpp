@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <omp.h>
 
 #include <algorithm>
 #include <array>
@@ -59,12 +60,18 @@ std::mutex& gmshMutex() {
     return m;
 }
 
+// gmsh sets OpenMP's thread count for the whole process (General.NumThreads, 1 by default): the
+// session gives the caller's count back, or a run that reads a gmsh geometry would go on one thread.
 struct GmshSession {
-    GmshSession() {
+    GmshSession() : threads(omp_get_max_threads()) {
         gmsh::initialize(0, nullptr, false);
         gmsh::option::setNumber("General.Terminal", 0);
     }
-    ~GmshSession() { gmsh::finalize(); }
+    ~GmshSession() {
+        gmsh::finalize();
+        omp_set_num_threads(threads);
+    }
+    int threads;
     GmshSession(const GmshSession&) = delete;
     GmshSession& operator=(const GmshSession&) = delete;
 };

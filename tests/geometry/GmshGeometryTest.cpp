@@ -9,6 +9,7 @@
 #include "io/Dictionary.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 using namespace dpd;
 using namespace geometryTest;
@@ -132,3 +133,14 @@ TEST_F(GmshGeometry, ExtrudedFluidVolumeGivesTheSameFlagsAsTheMaskIn3D) {
 }
 
 }  // namespace
+
+// gmsh sets OpenMP's thread count for the process; reading a geometry must leave the caller's (a run
+// that read a gmsh channel went on one thread of two).
+TEST_F(GmshGeometry, ReadingAGeometryLeavesTheThreadCountAlone) {
+    writeText(path("fluid.geo"), oneFluidRectangle);
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(3);
+    gmshRegion(path("fluid.geo"), channelBox(2));
+    EXPECT_EQ(omp_get_max_threads(), 3);
+    omp_set_num_threads(before);
+}
