@@ -76,4 +76,28 @@ std::vector<TimeDirectory> selectTimes(const std::string& caseDir, const std::st
     return chosen;
 }
 
+TimesWithInput selectTimesWithInput(const std::string& caseDir, const std::string& timeOption, bool latestTime,
+                                    const std::function<bool(const TimeDirectory&)>& hasInput,
+                                    const std::function<void(const TimeDirectory&)>& missing,
+                                    const std::function<void(const std::vector<std::string>&)>& none) {
+    const bool named = latestTime || !timeOption.empty();
+    const char* const mustThrow = "selectTimesWithInput: missing() and none() must throw";
+    TimesWithInput selected;
+    for (const TimeDirectory& t : selectTimes(caseDir, timeOption, latestTime)) {
+        if (hasInput(t)) {
+            selected.times.push_back(t);
+        } else if (named) {
+            missing(t);
+            throw std::logic_error(mustThrow);
+        } else {
+            selected.skipped.push_back(t.name);
+        }
+    }
+    if (selected.times.empty()) {
+        none(selected.skipped);
+        throw std::logic_error(mustThrow);
+    }
+    return selected;
+}
+
 }  // namespace dpd

@@ -1,5 +1,6 @@
 #pragma once
 // Time directories of a case, named as OpenFOAM names them ("0", "20", "0.5").
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,5 +20,18 @@ std::vector<TimeDirectory> listTimes(const std::string& caseDir);
 // selection finds nothing.
 std::vector<TimeDirectory> selectTimes(const std::string& caseDir, const std::string& timeOption, bool latestTime,
                                        bool includeZero = false);
+
+// The selected times that hold a post-processing tool's input (hasInput). A time named on the
+// command line (-time, -latestTime) must hold it: missing(time) is called and must throw. In the
+// default selection (every time but 0) the times without it are passed over and listed in
+// `skipped`. When no time holds it, none(skipped) is called and must throw.
+struct TimesWithInput {
+    std::vector<TimeDirectory> times;
+    std::vector<std::string> skipped;
+};
+TimesWithInput selectTimesWithInput(const std::string& caseDir, const std::string& timeOption, bool latestTime,
+                                    const std::function<bool(const TimeDirectory&)>& hasInput,
+                                    const std::function<void(const TimeDirectory&)>& missing,
+                                    const std::function<void(const std::vector<std::string>&)>& none);
 
 }  // namespace dpd

@@ -1,6 +1,8 @@
 #include "sampling/BinProfile.hpp"
+
 #include "core/Axis.hpp"
 #include "sampling/BlockStatistics.hpp"
+#include "sampling/UsableBin.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +26,7 @@ StressPoint stressEstimate(const BinSums& b, long samples, double binMeasure, in
     const double volume = samples * binMeasure;
     const double n = b.s[0];
     const auto kinetic = [&](int a, int c) {
-        if (n < 3) return 0.0;
+        if (!usableBin(n)) return 0.0;
         const double meanX = b.s[7] / n, varX = b.s[8] / n - meanX * meanX;
         const double va = b.s[1 + a] / n, vc = b.s[1 + c] / n;
         const double second = a == c ? b.s[4 + a] : b.s[BinSums::kCross + tensorIndex(a, c) - 3];
@@ -47,7 +49,7 @@ BinEstimate estimate(const BinSums& b, long samples, double binMeasure, int dime
     BinEstimate e;
     const double n = b.s[0];
     e.density = samples > 0 ? n / (samples * binMeasure) : 0.0;
-    if (n < 3) return e;
+    if (!usableBin(n)) return e;
     e.ux = b.s[1] / n; e.uy = b.s[2] / n; e.uz = b.s[3] / n;
     const double meanX = b.s[7] / n;
     const double varX = b.s[8] / n - meanX * meanX;

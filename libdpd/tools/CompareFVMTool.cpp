@@ -8,6 +8,7 @@
 #include "io/Snapshot.hpp"
 #include "io/TimeDirectories.hpp"
 #include "case/DpdProperties.hpp"
+#include "sampling/UsableBin.hpp"
 #include "sampling/ProfileTable.hpp"
 
 #include <algorithm>
@@ -140,7 +141,7 @@ fs::path profileTable(const Setup& s, const fs::path& caseDir, const std::string
     return tables.front();
 }
 
-// The bins the DPD profile has velocities in (at least 3 particle-samples).
+// The bins the DPD profile has velocities in (sampling/UsableBin.hpp).
 void dpdPoints(const ProfileTableData& t, int component, CompareFVMResult& r) {
     const std::string u = std::string("u") + axisLetter(component);
     const std::vector<double>& x = t.column(t.axisName());
@@ -148,7 +149,7 @@ void dpdPoints(const ProfileTableData& t, int component, CompareFVMResult& r) {
     const std::vector<double>& e = t.column(u + "Err");
     const std::vector<double>* count = t.has("count") ? &t.column("count") : nullptr;
     for (std::size_t i = 0; i < x.size(); ++i) {
-        if (count && (*count)[i] < 3.0) continue;
+        if (count && !usableBin((*count)[i])) continue;
         r.x.push_back(x[i]);
         r.uDPD.push_back(v[i]);
         r.uDPDErr.push_back(e[i]);
@@ -288,7 +289,7 @@ CompareFVMResult compareGrid(const Setup& s, const ProfileTableData& t, const st
     }
     const BinnedCells cells = binCells(centres, U, r.component, grid);
     for (std::size_t k = 0; k < c0.size(); ++k) {
-        if (count[k] < 3.0) continue;
+        if (!usableBin(count[k])) continue;
         r.x.push_back(c0[k]);
         r.x2.push_back(c1[k]);
         r.uDPD.push_back(u[k]);
@@ -392,20 +393,20 @@ std::vector<CompareFVMResult> runCompareFVM(const CompareFVMOptions& o, std::ost
         throw IoError((s.foamCase / s.foamTime / "U").string() + ": " + std::to_string(U.size()) + " cell values but " +
                       cPath.string() + " has " + std::to_string(centres.size()) + " cells");
 
-    const std::vector<TimeDirectory> times = selectTimes(o.caseDir, o.time, o.latestTime);
-    const bool explicitSelection = o.latestTime || !o.time.empty();
+    const auto binsDir = [&](const TimeDirectory& t) { return fs::path(o.caseDir) / "postProcessing" / "profileBins" / t.name; };
+    const TimesWithInput selected = selectTimesWithInput(
+        o.caseDir, o.time, o.latestTime, [&](const TimeDirectory& t) { return fs::is_directory(binsDir(t)); },
+        [&](const TimeDirectory& t) { throw IoError("no directory " + binsDir(t).string() + " (run profileBins first)"); },
+        [&](const std::vector<std::string>&) {
+            throw IoError("no time of case '" + o.caseDir + "' has postProcessing/profileBins/<time>/ (run profileBins first)");
+        });
     std::vector<CompareFVMResult> results;
-    for (const TimeDirectory& t : times) {
-        const fs::path dir = fs::path(o.caseDir) / "postProcessing" / "profileBins" / t.name;
-        if (!explicitSelection && !fs::is_directory(dir)) continue;
+    for (const TimeDirectory& t : selected.times) {
         const fs::path table = profileTable(s, o.caseDir, t.name);
-        if (!fs::is_regular_file(table))
-            throw IoError("no profile table " + table.string() + " (run profileBins first)");
+        if (!fs::is_regular_file(table)) throw IoError("no profile table " + table.string() + " (run profileBins first)");
         const ProfileTableData data = readProfileTable(table.string());
         results.push_back(isGridTable(data) ? compareGrid(s, data, centres, U, t.name) : compareTime(s, data, centres, U, t.name));
     }
-    if (results.empty())
-        throw IoError("no time of case '" + o.caseDir + "' has postProcessing/profileBins/<time>/ (run profileBins first)");
     for (const CompareFVMResult& r : results) {
         const fs::path dir = fs::path(o.caseDir) / "postProcessing" / "compareFVM" / r.time;
         Dictionary d;

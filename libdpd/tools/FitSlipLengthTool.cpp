@@ -3,6 +3,7 @@
 #include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "io/TimeDirectories.hpp"
+#include "sampling/UsableBin.hpp"
 #include "sampling/BinProfile.hpp"
 
 #include <algorithm>
@@ -106,7 +107,7 @@ Points usablePoints(const ProfileTableData& t, int component) {
     std::vector<std::size_t> keep;
     bool anyError = false;
     for (std::size_t i = 0; i < y.size(); ++i) {
-        if (count && (*count)[i] < 3.0) {
+        if (count && !usableBin((*count)[i])) {
             ++pts.withoutVelocity;
             continue;
         }
@@ -522,30 +523,26 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
     const Dictionary props = Dictionary::readFile((caseDir / "constant" / "dpdProperties").string());
     const FitSlipLengthSetup setup = readFitSlipLengthSetup(dict, props);
 
-    const std::vector<TimeDirectory> times = selectTimes(o.caseDir, o.time, o.latestTime);
-    // Times named explicitly must have the table; in the default "every time" selection, times that
-    // profileBins was not run on are passed over (but at least one must have it).
-    const bool explicitSelection = o.latestTime || !o.time.empty();
-    std::vector<FitSlipLengthResult> results;
-    std::vector<std::string> skipped;
-    for (const TimeDirectory& t : times) {
-        const fs::path table = caseDir / "postProcessing" / "profileBins" / t.name / (setup.profile + ".dat");
-        if (!fs::exists(table)) {
-            if (!explicitSelection) {
-                skipped.push_back(t.name);
-                continue;
-            }
+    const auto tableOf = [&](const TimeDirectory& t) {
+        return caseDir / "postProcessing" / "profileBins" / t.name / (setup.profile + ".dat");
+    };
+    const TimesWithInput selected = selectTimesWithInput(
+        o.caseDir, o.time, o.latestTime, [&](const TimeDirectory& t) { return fs::exists(tableOf(t)); },
+        [&](const TimeDirectory& t) {
             throw InputError(dict.fileName(), dict.lineOf("profile"), "profile",
-                             "no profile table " + table.string() + " (run profileBins first)");
-        }
-        results.push_back(fitSlipLength(setup, readProfileTable(table.string()), t.name));
+                             "no profile table " + tableOf(t).string() + " (run profileBins first)");
+        },
+        [&](const std::vector<std::string>&) {
+            throw InputError(dict.fileName(), dict.lineOf("profile"), "profile",
+                             "no time of case '" + o.caseDir + "' has the profile table postProcessing/profileBins/<time>/" +
+                                 setup.profile + ".dat (run profileBins first)");
+        });
+    std::vector<FitSlipLengthResult> results;
+    for (const TimeDirectory& t : selected.times) {
+        results.push_back(fitSlipLength(setup, readProfileTable(tableOf(t).string()), t.name));
         results.back().profileFile = (fs::path("postProcessing") / "profileBins" / t.name / (setup.profile + ".dat")).string();
     }
-    if (results.empty())
-        throw InputError(dict.fileName(), dict.lineOf("profile"), "profile",
-                         "no time of case '" + o.caseDir + "' has the profile table postProcessing/profileBins/<time>/" +
-                             setup.profile + ".dat (run profileBins first)");
-    for (const auto& t : skipped) out << "Time = " << t << ": no profile table " << setup.profile << ".dat, skipped\n";
+    for (const auto& t : selected.skipped) out << "Time = " << t << ": no profile table " << setup.profile << ".dat, skipped\n";
     for (const auto& r : results) {
         const fs::path dir = caseDir / "postProcessing" / "fitSlipLength" / r.time;
         std::error_code ec;

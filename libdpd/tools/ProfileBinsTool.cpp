@@ -155,51 +155,65 @@ BinProfile binSnapshot(const Dictionary& d, const Snapshot& snap, BinLayout* lay
     return computeProfile(acc, crossSection, snap.box.dimension);
 }
 
-std::vector<ProfileBinsItem> computeProfileBins(const ProfileBinsOptions& o, std::vector<std::string>* skipped) {
+namespace {
+
+std::vector<ProfileBinsItem> snapshotProfileBins(const ProfileBinsOptions& o) {
     const fs::path caseDir(o.caseDir);
-    const std::vector<TimeDirectory> times = selectedTimes(o);
-    const fs::path outRoot = caseDir / "postProcessing" / "profileBins";
+    const Dictionary dict = Dictionary::readFile((caseDir / "system" / "profileBinsDict").string());
     std::vector<ProfileBinsItem> items;
-
-    if (o.snapshot) {
-        const Dictionary dict = Dictionary::readFile((caseDir / "system" / "profileBinsDict").string());
-        for (const TimeDirectory& t : times) {
-            const std::string file = (caseDir / t.name / snapshotFileName).string();
-            if (!fs::exists(file)) throw IoError("time directory '" + (caseDir / t.name).string() + "' has no " + snapshotFileName);
-            const Snapshot snap = readSnapshot(file);
-            ProfileBinsItem item;
-            BinLayout layout;
-            item.profile = binSnapshot(dict, snap, &layout);
-            item.time = t.name;
-            item.name = "snapshot";
-            item.axisName = axisLetter(layout.axis);
-            item.layout = layout;
-            item.sections = readSections(dict, layout);
-            item.source = file;
-            item.output = (outRoot / t.name / "snapshot.dat").string();
-            item.summary = summariseProfile(item.profile, layout.lo, layout.hi, o.margin);
-            items.push_back(std::move(item));
-        }
-        return items;
+    for (const TimeDirectory& t : selectedTimes(o)) {
+        const std::string file = (caseDir / t.name / snapshotFileName).string();
+        if (!fs::exists(file)) throw IoError("time directory '" + (caseDir / t.name).string() + "' has no " + snapshotFileName);
+        const Snapshot snap = readSnapshot(file);
+        ProfileBinsItem item;
+        BinLayout layout;
+        item.profile = binSnapshot(dict, snap, &layout);
+        item.time = t.name;
+        item.name = "snapshot";
+        item.axisName = axisLetter(layout.axis);
+        item.layout = layout;
+        item.sections = readSections(dict, layout);
+        item.source = file;
+        item.output = (caseDir / "postProcessing" / "profileBins" / t.name / "snapshot.dat").string();
+        item.summary = summariseProfile(item.profile, layout.lo, layout.hi, o.margin);
+        items.push_back(std::move(item));
     }
+    return items;
+}
 
-    // Times named explicitly must have sampling; in the default "every time" selection a time written
-    // before sampling started has none and is passed over.
-    const bool explicitSelection = o.latestTime || !o.time.empty();
-    std::vector<std::string> without;
-    for (const TimeDirectory& t : times) {
-        const fs::path timeDir = caseDir / t.name;
-        const std::vector<std::string> files = samplingFiles(timeDir);
-        if (files.empty()) {
-            if (explicitSelection)
-                throw IoError("time directory '" + timeDir.string() +
-                              "' has no sampling files (sampling/*.h5): the solver writes them for the binnedProfile "
-                              "functions of system/controlDict; use -snapshot to bin " +
-                              snapshotFileName + " instead");
-            without.push_back(t.name);
-            continue;
-        }
-        for (const std::string& file : files) {
+// The times with sampling files: a time written before sampling started has none.
+TimesWithInput timesWithSampling(const ProfileBinsOptions& o) {
+    const fs::path caseDir(o.caseDir);
+    const std::string why = ": the solver writes them for the binnedProfile functions of system/controlDict; use -snapshot "
+                            "to bin " + std::string(snapshotFileName) + " instead";
+    try {
+        return selectTimesWithInput(
+            o.caseDir, o.time, o.latestTime, [&](const TimeDirectory& t) { return !samplingFiles(caseDir / t.name).empty(); },
+            [&](const TimeDirectory& t) {
+                throw IoError("time directory '" + (caseDir / t.name).string() + "' has no sampling files (sampling/*.h5)" + why);
+            },
+            [&](const std::vector<std::string>& without) {
+                std::string names;
+                for (const auto& n : without) names += (names.empty() ? "'" : "', '") + (caseDir / n).string();
+                throw IoError("no sampling files (sampling/*.h5) in time director" +
+                              std::string(without.size() == 1 ? "y " : "ies ") + names + "'" + why);
+            });
+    } catch (const IoError&) {
+        throw;
+    } catch (const std::runtime_error& e) {
+        throw IoError(e.what());
+    }
+}
+
+}  // namespace
+
+std::vector<ProfileBinsItem> computeProfileBins(const ProfileBinsOptions& o, std::vector<std::string>* skipped) {
+    if (o.snapshot) return snapshotProfileBins(o);
+    const fs::path caseDir(o.caseDir);
+    const TimesWithInput selected = timesWithSampling(o);
+    std::vector<ProfileBinsItem> items;
+    for (const TimeDirectory& t : selected.times)
+        for (const std::string& file : samplingFiles(caseDir / t.name)) {
             const StoredBins bins = readBins(file);
             ProfileBinsItem item;
             item.time = t.name;
@@ -208,21 +222,12 @@ std::vector<ProfileBinsItem> computeProfileBins(const ProfileBinsOptions& o, std
             item.layout = bins.accumulator.layout();
             item.sections = bins.sections;
             item.source = file;
-            item.output = (outRoot / t.name / (item.name + ".dat")).string();
+            item.output = (caseDir / "postProcessing" / "profileBins" / t.name / (item.name + ".dat")).string();
             item.profile = computeProfile(bins.accumulator, bins.crossSection, bins.dimension);
             item.summary = summariseBins(bins, o.margin);
             items.push_back(std::move(item));
         }
-    }
-    if (items.empty()) {
-        std::string names;
-        for (const auto& n : without) names += (names.empty() ? "'" : "', '") + (caseDir / n).string();
-        throw IoError("no sampling files (sampling/*.h5) in time director" + std::string(without.size() == 1 ? "y " : "ies ") +
-                      names + "'" +
-                      ": the solver writes them for the binnedProfile functions of system/controlDict; use -snapshot "
-                      "to bin " + snapshotFileName + " instead");
-    }
-    if (skipped) *skipped = without;
+    if (skipped) *skipped = selected.skipped;
     return items;
 }
 
