@@ -100,18 +100,7 @@ PairTable readPairs(const Dictionary& d, const SpeciesTable& species, std::vecto
 }
 
 IntegratorSettings readIntegrator(const Dictionary& d) {
-    IntegratorSettings s;
-    if (!d.found("integrator")) return s;
-    const Dictionary& id = d.subDict("integrator");
-    id.checkKeys({"type", "lambda"});
-    s.type = id.get<std::string>("type");
-    const auto& types = integratorTypes();
-    if (std::find(types.begin(), types.end(), s.type) == types.end())
-        id.fail("type", "unknown integrator '" + s.type + "': expected " + integratorTypeList());
-    if (s.type != "GrootWarren" && id.found("lambda")) id.fail("lambda", "only the GrootWarren integrator takes lambda");
-    s.lambda = id.getOrDefault<double>("lambda", 0.65);
-    if (s.lambda < 0.0 || s.lambda > 1.0) id.fail("lambda", "must lie in [0, 1]");
-    return s;
+    return d.found("integrator") ? IntegratorSettings::read(d.subDict("integrator")) : IntegratorSettings{};
 }
 
 BodyForce readBodyForce(const Dictionary& d, int dimension) {
@@ -244,11 +233,7 @@ DpdModel readDpdModel(const Dictionary& d) {
     m.integrator = readIntegrator(d);
     m.bodyForce = readBodyForce(d, m.dimension);
     m.walls = readWalls(d, m.dimension, m.cutoff);
-    // Shardlow's splitting computes conservative forces only (PartialPairForces): it has no place yet
-    // for the tunable-slip wall's velocity-dependent force.
-    if (m.walls.anyTunableSlip() && m.integrator.type == "Shardlow")
-        d.subDict("integrator").fail("type", "the Shardlow integrator does not support tunableSlip walls yet: use "
-                                             "GrootWarren, DPDVV or Euler");
+    makeIntegrator(m.integrator, m.walls);  // the type refuses walls it cannot run
     m.geometryWall = readGeometryWall(d, m.cutoff);
     m.stability = readStability(d);
     return m;

@@ -7,6 +7,11 @@
 
 namespace dpd {
 
+std::unique_ptr<Integrator> DpdVvIntegrator::New(const Dictionary& coeffs) {
+    coeffs.checkKeys({"type"});
+    return std::make_unique<DpdVvIntegrator>();
+}
+
 WallCounters DpdVvIntegrator::step(System& sys) {
     Particles& p = sys.particles;
     const double halfDt = 0.5 * sys.dt();

@@ -17,6 +17,8 @@ namespace dpd {
 
 class DpdVvIntegrator : public Integrator {
 public:
+    // No coefficients.
+    static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "DPDVV"; }
     WallCounters step(System& sys) override;
 

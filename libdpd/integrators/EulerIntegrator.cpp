@@ -5,6 +5,11 @@
 
 namespace dpd {
 
+std::unique_ptr<Integrator> EulerIntegrator::New(const Dictionary& coeffs) {
+    coeffs.checkKeys({"type"});
+    return std::make_unique<EulerIntegrator>();
+}
+
 WallCounters EulerIntegrator::step(System& sys) {
     drift(sys);            // positions with the old velocities,
     kick(sys, sys.dt());   // velocities with the old forces

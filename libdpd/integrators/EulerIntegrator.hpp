@@ -7,6 +7,8 @@ namespace dpd {
 
 class EulerIntegrator : public Integrator {
 public:
+    // No coefficients.
+    static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "Euler"; }
     WallCounters step(System& sys) override;
 };

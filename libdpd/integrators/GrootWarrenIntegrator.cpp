@@ -6,6 +6,13 @@
 
 namespace dpd {
 
+std::unique_ptr<Integrator> GrootWarrenIntegrator::New(const Dictionary& coeffs) {
+    coeffs.checkKeys({"type", "lambda"});
+    const double lambda = coeffs.getOrDefault<double>("lambda", 0.65);
+    if (!(lambda >= 0.0 && lambda <= 1.0)) coeffs.fail("lambda", "must lie in [0, 1]");
+    return std::make_unique<GrootWarrenIntegrator>(lambda);
+}
+
 WallCounters GrootWarrenIntegrator::step(System& sys) {
     Particles& p = sys.particles;
     const double dt = sys.dt();

@@ -20,6 +20,8 @@ namespace dpd {
 class GrootWarrenIntegrator : public Integrator {
 public:
     explicit GrootWarrenIntegrator(double lambda) : lambda_(lambda) {}
+    // lambda (default 0.65) in [0, 1].
+    static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "GrootWarren"; }
     double lambda() const { return lambda_; }
     WallCounters step(System& sys) override;

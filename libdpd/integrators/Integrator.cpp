@@ -1,36 +1,34 @@
 #include "integrators/Integrator.hpp"
 
-#include "integrators/DpdVvIntegrator.hpp"
-#include "integrators/EulerIntegrator.hpp"
-#include "integrators/GrootWarrenIntegrator.hpp"
-#include "integrators/ShardlowIntegrator.hpp"
-
-#include <stdexcept>
-
 namespace dpd {
 
-const std::vector<std::string>& integratorTypes() {
-    static const std::vector<std::string> types{"Euler", "GrootWarren", "DPDVV", "Shardlow"};
-    return types;
+std::vector<std::string> integratorTypes() { return integratorRegistry().names(); }
+
+std::string integratorTypeList() { return integratorRegistry().nameList(); }
+
+IntegratorSettings IntegratorSettings::read(const Dictionary& sub) {
+    IntegratorSettings s;
+    s.type = sub.get<std::string>("type");
+    if (!integratorRegistry().has(s.type))
+        sub.fail("type", "unknown integrator '" + s.type + "': expected " + integratorTypeList());
+    s.coeffs = sub;
+    makeIntegrator(s);  // the type checks its own keywords and values now, not at the first step
+    return s;
 }
 
-std::string integratorTypeList() {
-    const auto& types = integratorTypes();
-    std::string list;
-    for (std::size_t k = 0; k < types.size(); ++k)
-        list += (k == 0 ? "" : (k + 1 == types.size() ? " or " : ", ")) + types[k];
-    return list;
+IntegratorSettings IntegratorSettings::parse(const std::string& text) {
+    return read(Dictionary::parse(text, "integrator"));
 }
 
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s) {
-    if (s.type == "Euler") return std::make_unique<EulerIntegrator>();
-    if (s.type == "GrootWarren") {
-        if (s.lambda < 0.0 || s.lambda > 1.0) throw std::invalid_argument("lambda must lie in [0, 1]");
-        return std::make_unique<GrootWarrenIntegrator>(s.lambda);
-    }
-    if (s.type == "DPDVV") return std::make_unique<DpdVvIntegrator>();
-    if (s.type == "Shardlow") return std::make_unique<ShardlowIntegrator>();
-    throw std::invalid_argument("unknown integrator '" + s.type + "' (expected " + integratorTypeList() + ")");
+    return integratorRegistry().make(s.type, s.coeffs);
+}
+
+std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallSet& walls) {
+    auto integrator = makeIntegrator(s);
+    const std::string why = integrator->unsupported(walls);
+    if (!why.empty()) s.coeffs.fail("type", why);
+    return integrator;
 }
 
 }  // namespace dpd

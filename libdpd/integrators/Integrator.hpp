@@ -1,6 +1,12 @@
 #pragma once
 // A time integrator advances a System by one step. On entry the forces are those of the current
 // state; on exit the clock has moved on by dt and the forces are those of the new state.
+//
+// Types are chosen by name (integrator { type <name>; <its coefficients> } in dpdProperties): each
+// type makes itself from its sub-dictionary, reading and checking its own keys, and says which scenes
+// it cannot run. Adding a type adds its files and one line in integrators/IntegratorTypes.cpp.
+#include "core/Registry.hpp"
+#include "io/Dictionary.hpp"
 #include "walls/WallSet.hpp"
 
 #include <memory>
@@ -17,18 +23,32 @@ public:
     virtual std::string name() const = 0;
     // Returns what the walls did during the step.
     virtual WallCounters step(System& sys) = 0;
+    // Why this scheme cannot run a scene with these walls; empty when it can.
+    virtual std::string unsupported(const WallSet&) const { return {}; }
 };
 
-struct IntegratorSettings {
-    std::string type = "GrootWarren";  // one of integratorTypes()
-    double lambda = 0.65;              // Groot-Warren only; 0.5 is velocity Verlet
-};
-
-// The valid types: Euler, GrootWarren, DPDVV, Shardlow; and the same as text ("Euler, ... or Shardlow").
-const std::vector<std::string>& integratorTypes();
+using IntegratorRegistry = Registry<Integrator, const Dictionary&>;
+// The integrator types, in the order they are listed to users.
+const IntegratorRegistry& integratorRegistry();
+// Their names, and the same as text ("Euler, ... or Shardlow").
+std::vector<std::string> integratorTypes();
 std::string integratorTypeList();
 
-// Throws std::invalid_argument for an unknown type or a lambda outside [0, 1].
+// What a case says of its integrator: the type and its sub-dictionary (the type's coefficients).
+struct IntegratorSettings {
+    std::string type = "GrootWarren";
+    Dictionary coeffs{"integrator"};
+
+    // From a sub-dictionary { type <name>; ... }: an InputError naming the file, line and keyword for
+    // an unknown type or a coefficient the type does not take or accept.
+    static IntegratorSettings read(const Dictionary& sub);
+    // The same from text, e.g. "type GrootWarren; lambda 0.5;".
+    static IntegratorSettings parse(const std::string& text);
+};
+
+// Throws std::invalid_argument for an unknown type, InputError for bad coefficients.
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s);
+// The same for a scene's walls: an InputError at the type's keyword when the scheme cannot run them.
+std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallSet& walls);
 
 }  // namespace dpd

@@ -7,6 +7,16 @@
 
 namespace dpd {
 
+std::unique_ptr<Integrator> ShardlowIntegrator::New(const Dictionary& coeffs) {
+    coeffs.checkKeys({"type"});
+    return std::make_unique<ShardlowIntegrator>();
+}
+
+std::string ShardlowIntegrator::unsupported(const WallSet& walls) const {
+    if (!walls.anyTunableSlip()) return {};
+    return "the Shardlow integrator does not support tunableSlip walls yet: use GrootWarren, DPDVV or Euler";
+}
+
 WallCounters ShardlowIntegrator::step(System& sys) {
     if (forcesStep_ != sys.step) computeConservativeForces(sys);
     const double dt = sys.dt();

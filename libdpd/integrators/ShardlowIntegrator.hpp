@@ -19,7 +19,11 @@ namespace dpd {
 
 class ShardlowIntegrator : public Integrator {
 public:
+    // No coefficients.
+    static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "Shardlow"; }
+    // Its sweep has no place yet for the tunable-slip wall's velocity-dependent force.
+    std::string unsupported(const WallSet& walls) const override;
     WallCounters step(System& sys) override;
 
 private:

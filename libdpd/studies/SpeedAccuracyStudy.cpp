@@ -36,17 +36,7 @@ std::vector<SpeedAccuracyCase> readIntegrators(const Dictionary& d) {
     std::vector<SpeedAccuracyCase> cases;
     for (const std::string& label : id.keys()) {
         if (!id.isDict(label)) id.fail(label, "each integrator is a sub-dictionary, e.g. GW { type GrootWarren; }");
-        const Dictionary& c = id.subDict(label);
-        c.checkKeys({"type", "lambda"});
-        SpeedAccuracyCase k{label, {}};
-        k.integrator.type = c.get<std::string>("type");
-        k.integrator.lambda = c.getOrDefault<double>("lambda", k.integrator.lambda);
-        try {
-            makeIntegrator(k.integrator);
-        } catch (const std::invalid_argument& e) {
-            c.fail("type", e.what());
-        }
-        cases.push_back(k);
+        cases.push_back({label, IntegratorSettings::read(id.subDict(label))});
     }
     if (cases.empty()) d.fail("integrators", "at least one integrator");
     return cases;

@@ -1,7 +1,10 @@
-// Choosing the integrator in constant/dpdProperties (case/DpdProperties.cpp, integrators/Integrator.cpp):
-// every listed type builds the scheme of that name, and a wrong type or a misplaced lambda is an input
-// error naming the file, the line and the keyword, and listing the valid types.
+// Choosing the integrator by name (integrators/Integrator.*, IntegratorTypes.cpp): every listed type
+// builds the scheme of that name from its own sub-dictionary, a wrong type or a misplaced lambda is an
+// input error naming the file, the line and the keyword (and the valid types), and a type refuses the
+// scenes it cannot run.
 #include "core/Error.hpp"
+#include "integrators/EulerIntegrator.hpp"
+#include "integrators/GrootWarrenIntegrator.hpp"
 #include "integrators/Integrator.hpp"
 #include "io/Dictionary.hpp"
 #include "case/DpdProperties.hpp"
@@ -30,7 +33,9 @@ TEST(IntegratorSelection, EveryTypeBuildsTheSchemeOfThatName) {
         EXPECT_EQ(m.integrator.type, type);
         EXPECT_EQ(makeIntegrator(m.integrator)->name(), type);
     }
-    EXPECT_DOUBLE_EQ(readWithIntegrator("type GrootWarren; lambda 0.5;").integrator.lambda, 0.5);
+    const auto gw = makeIntegrator(readWithIntegrator("type GrootWarren; lambda 0.5;").integrator);
+    EXPECT_DOUBLE_EQ(dynamic_cast<const GrootWarrenIntegrator&>(*gw).lambda(), 0.5);
+    EXPECT_DOUBLE_EQ(dynamic_cast<const GrootWarrenIntegrator&>(*makeIntegrator(IntegratorSettings{})).lambda(), 0.65);
 }
 
 TEST(IntegratorSelection, UnknownTypeNamesFileLineAndTheValidTypes) {
@@ -59,4 +64,33 @@ TEST(IntegratorSelection, LambdaBelongsToGrootWarrenOnly) {
         }
     }
     EXPECT_THROW(readWithIntegrator("type GrootWarren; lambda 1.5;"), InputError);
+}
+
+// Each type says which scenes it cannot run, as an input error at its type keyword.
+TEST(IntegratorSelection, ShardlowRefusesTunableSlipWalls) {
+    WallSet walls;
+    walls.add(PlanarWall{});
+    const IntegratorSettings shardlow = IntegratorSettings::parse("type Shardlow;");
+    EXPECT_NO_THROW(makeIntegrator(shardlow, walls));
+    PlanarWall w;
+    w.hasTunableSlip = true;
+    walls.add(w);
+    try {
+        makeIntegrator(shardlow, walls);
+        FAIL() << "Shardlow must refuse tunable-slip walls";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.keyword(), "type");
+        EXPECT_NE(std::string(e.what()).find("tunableSlip"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(makeIntegrator(IntegratorSettings::parse("type GrootWarren;"), walls));
+}
+
+// The registry refuses a name twice and lists the names in order.
+TEST(IntegratorSelection, TheRegistryKeepsOneMakerPerName) {
+    IntegratorRegistry r;
+    r.add("A", &EulerIntegrator::New).add("B", &EulerIntegrator::New).add("C", &EulerIntegrator::New);
+    EXPECT_EQ(r.nameList(), "A, B or C");
+    EXPECT_THROW(r.add("B", &EulerIntegrator::New), std::logic_error);
+    EXPECT_THROW(r.make("D", Dictionary("x")), std::invalid_argument);
+    EXPECT_EQ(r.make("C", Dictionary("x"))->name(), "Euler");
 }

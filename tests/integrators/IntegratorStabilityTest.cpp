@@ -93,9 +93,8 @@ TEST_P(IntegratorStability, BehavesAsMeasured) {
     System sys = equilibratedFluid();
     sys.forceParameters.dt = c.dt;
     sys.computeForces();
-    IntegratorSettings settings;
-    settings.type = c.type;
-    settings.lambda = c.lambda;
+    const IntegratorSettings settings = IntegratorSettings::parse(
+        "type " + std::string(c.type) + ";" + (std::string(c.type) == "GrootWarren" ? " lambda " + std::to_string(c.lambda) + ";" : ""));
     auto integrator = makeIntegrator(settings);
     TemperatureProbeSettings probe;
     probe.productionTime = c.productionTime;

@@ -34,8 +34,7 @@ Eigen::Vector3d totalMomentum(const System& sys) {
 
 std::unique_ptr<Integrator> makeScheme(const std::string& type) {
     IntegratorSettings s;
-    s.type = type;
-    s.lambda = 0.65;
+    s.type = type;  // Groot-Warren's lambda at its default, 0.65
     return makeIntegrator(s);
 }
 
