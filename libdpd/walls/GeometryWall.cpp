@@ -10,10 +10,6 @@ namespace dpd {
 
 namespace {
 
-// Random stream of the geometry wall's draws: apart from the planar walls' (kStreamReflection) and
-// from every other RandomStream, including Shardlow's 5 + 16 k and the +16 of the emitted speed.
-constexpr std::uint32_t kStreamGeometryWall = 0x40;
-
 Eigen::Vector3d positionOf(const Particles& p, std::size_t i) { return {p.rx[i], p.ry[i], p.rz[i]}; }
 Eigen::Vector3d velocityOf(const Particles& p, std::size_t i) { return {p.vx[i], p.vy[i], p.vz[i]}; }
 
@@ -87,20 +83,6 @@ GeometryWall::Entry GeometryWall::findEntry(const Eigen::Vector3d& from, const E
     return entry;
 }
 
-Eigen::Vector3d GeometryWall::reflectedVelocity(const Eigen::Vector3d& v, const Eigen::Vector3d& n, const Box& box,
-                                                const PairRandom& random, std::uint64_t step, std::uint64_t id,
-                                                double kT) const {
-    switch (rule_) {
-        case ReflectionRule::specular: return v - 2.0 * v.dot(n) * n;
-        case ReflectionRule::bounceBack: return -v;
-        case ReflectionRule::maxwellian: return diffuseVelocity(n, box, random, step, id, kT, kStreamGeometryWall);
-        case ReflectionRule::bounceLayer: return turnedRound(n, v, random, step, id, kT, kStreamGeometryWall);
-        case ReflectionRule::none:
-        case ReflectionRule::bounceForward: break;
-    }
-    return v;
-}
-
 bool GeometryWall::returnParticle(Particles& p, std::size_t i, const Entry& entry, const Eigen::Vector3d& end,
                                   const Box& box, const PairRandom& random, std::uint64_t step, double kT) const {
     // The tangent plane of the surface where the path entered, seen from the fluid it came from.
@@ -117,7 +99,8 @@ bool GeometryWall::returnParticle(Particles& p, std::size_t i, const Entry& entr
                           findEntry(entry.fluidPoint, minimumImage(back - entry.fluidPoint, box), unused).found))
         back = entry.fluidPoint;
     setPosition(p, i, back);
-    if (n.squaredNorm() > 0.0) setVelocity(p, i, reflectedVelocity(velocityOf(p, i), n, box, random, step, p.id[i], kT));
+    if (n.squaredNorm() > 0.0)
+        setVelocity(p, i, reflectedVelocity(rule_, velocityOf(p, i), n, box, random, step, p.id[i], kT, kStreamGeometryWall));
     return field_.distance(back) >= 0.0;
 }
 

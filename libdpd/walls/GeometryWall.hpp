@@ -59,8 +59,6 @@ private:
     // Puts one particle that entered the solid back and changes its velocity; true if it is out.
     bool returnParticle(Particles& p, std::size_t i, const Entry& entry, const Eigen::Vector3d& end, const Box& box,
                         const PairRandom& random, std::uint64_t step, double kT) const;
-    Eigen::Vector3d reflectedVelocity(const Eigen::Vector3d& v, const Eigen::Vector3d& normal, const Box& box,
-                                      const PairRandom& random, std::uint64_t step, std::uint64_t id, double kT) const;
 
     SignedDistanceField field_;
     ReflectionRule rule_;

@@ -7,6 +7,7 @@
 // A moving wall slides in its own plane (its velocity has no normal component), so the plane maps
 // onto itself and only the wall's frozen particles move: they carry the wall's velocity
 // (WallSet::assignFrozenVelocities) and drift with it like any particle.
+#include "walls/ReflectionRule.hpp"
 #include "walls/TunableSlipWall.hpp"
 
 #include <Eigen/Core>
@@ -14,20 +15,6 @@
 
 namespace dpd {
 
-enum class ReflectionRule {
-    none,           // no reflection: the wall's frozen particles alone must keep the fluid out
-    specular,       // reverse the normal component (a perfectly slipping wall)
-    bounceBack,     // reverse the whole relative velocity (no slip)
-    maxwellian,     // diffuse: a new velocity drawn at the wall temperature, leaving the wall
-    bounceLayer,    // a layer of thickness alpha r_c in front of the plane turns approaching particles
-                    // round (docs/walls.md 3.2 steps 5-6); crossings of the plane are failures, counted
-    bounceForward,  // modified bounce-forward: mirror the penetrated position and reverse the velocity
-                    // the particle has there after the step (the step is finished at the penetrated
-                    // position, then the particle is put back)
-};
-
-ReflectionRule reflectionRuleFromName(const std::string& name);  // throws std::invalid_argument
-std::string reflectionRuleName(ReflectionRule rule);
 
 struct PlanarWall {
     std::string name;

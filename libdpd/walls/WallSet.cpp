@@ -35,16 +35,8 @@ Eigen::Vector3d mirrored(const PlanarWall& w, const Particles& p, std::size_t i,
 void reflectAtPlane(const PlanarWall& w, double depth, Particles& p, std::size_t i, const Box& box,
                     const PairRandom& random, std::uint64_t step, double kT) {
     setWrappedPosition(p, i, mirrored(w, p, i, depth), box);
-    Eigen::Vector3d v = velocityOf(p, i) - w.velocity;
-    switch (w.rule) {
-        case ReflectionRule::specular: v -= 2.0 * v.dot(w.normal) * w.normal; break;
-        case ReflectionRule::bounceBack: v = -v; break;
-        case ReflectionRule::maxwellian: v = diffuseVelocity(w.normal, box, random, step, p.id[i], kT, kStreamReflection); break;
-        case ReflectionRule::bounceLayer: v = turnedRound(w.normal, v, random, step, p.id[i], kT, kStreamReflection); break;
-        case ReflectionRule::none:
-        case ReflectionRule::bounceForward: break;  // bounceForward is finished after the step
-    }
-    setVelocity(p, i, v + w.velocity);
+    const Eigen::Vector3d v = velocityOf(p, i) - w.velocity;
+    setVelocity(p, i, reflectedVelocity(w.rule, v, w.normal, box, random, step, p.id[i], kT, kStreamReflection) + w.velocity);
 }
 
 struct RuleCounts {
