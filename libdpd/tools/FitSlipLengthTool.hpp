@@ -49,19 +49,20 @@
 #include "sampling/ProfileTable.hpp"
 
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace dpd {
 
-enum class FitSlipLengthMode { poiseuille, reversePoiseuille, couette };
+class FitMode;
 
 // The dictionary with the model it refers to; read once, used for every time.
 struct FitSlipLengthSetup {
     Dictionary dict;                  // system/fitSlipLengthDict (errors point into it)
     Dictionary dpdProperties;         // constant/dpdProperties (errors about walls and body force)
     DpdModel model;
-    FitSlipLengthMode mode = FitSlipLengthMode::poiseuille;
+    std::shared_ptr<const FitMode> mode;  // tools/FitMode.hpp: one of fitModes()
     std::string profile;              // table name without .dat
     int component = -1;               // -1 until resolved from the body force
     double exclude = 0.0;
@@ -77,7 +78,7 @@ struct FitSlipLengthSetup {
 FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictionary& dpdProperties);
 
 struct FitSlipLengthResult {
-    FitSlipLengthMode mode = FitSlipLengthMode::poiseuille;
+    std::shared_ptr<const FitMode> mode;
     std::string time;
     std::string profileFile;
     int axis = 2;             // the profile's axis

@@ -1,0 +1,52 @@
+#pragma once
+// A fit mode of fitSlipLength (mode poiseuille | reversePoiseuille | couette in fitSlipLengthDict):
+// each reads and checks its own part of the dictionary against the model, fits a profile, and
+// writes and prints its results. Adding a mode adds its files and one line in FitModes.cpp.
+#include "analysis/PoiseuilleFit.hpp"
+#include "core/Registry.hpp"
+#include "io/Dictionary.hpp"
+#include "sampling/ProfileTable.hpp"
+
+#include <iosfwd>
+#include <memory>
+#include <string>
+
+namespace dpd {
+
+struct FitSlipLengthSetup;
+struct FitSlipLengthResult;
+
+// Rows of the printed result: a label and one or two columns.
+class FitPrinter {
+public:
+    explicit FitPrinter(std::ostream& out) : out_(out) {}
+    void row(const std::string& label, const std::string& a, const std::string& b = "") const;
+    static std::string num(double x);
+    static std::string withErr(double v, double e) { return num(v) + " +- " + num(e); }
+
+private:
+    std::ostream& out_;
+};
+
+class FitMode {
+public:
+    virtual ~FitMode() = default;
+    virtual std::string name() const = 0;
+    // Checks the dictionary's mode-specific keys against the model and sets the component, exclude
+    // and fit range of the setup (InputError naming the file, line and keyword).
+    virtual void read(FitSlipLengthSetup& s) const = 0;
+    // Fits one table's usable points.
+    virtual void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
+                     FitSlipLengthResult& r) const = 0;
+    // Whether the profile lies between two walls (then tunable-slip walls get a predicted slip length).
+    virtual bool channel() const { return true; }
+    // The viscosity the fit measured; NaN when it measures none.
+    virtual double measuredNu(const FitSlipLengthResult& r) const = 0;
+    virtual void write(Dictionary& d, const FitSlipLengthResult& r) const = 0;
+    virtual void print(const FitPrinter& out, const std::string& axis, const FitSlipLengthResult& r) const = 0;
+};
+
+using FitModeRegistry = Registry<FitMode>;
+const FitModeRegistry& fitModes();
+
+}  // namespace dpd
