@@ -1,0 +1,15 @@
+// The function object types controlDict's `functions` can name: one line per type.
+#include "sampling/BinnedProfile.hpp"
+
+namespace dpd {
+
+const FunctionObjectRegistry& functionObjectTypes() {
+    static const FunctionObjectRegistry types = [] {
+        FunctionObjectRegistry r;
+        r.add("binnedProfile", &BinnedProfile::New);
+        return r;
+    }();
+    return types;
+}
+
+}  // namespace dpd
