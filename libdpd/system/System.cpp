@@ -121,9 +121,9 @@ WallCounters System::applyWalls() {
     if (geometryWall) {
         const GeometryWallCounts g = geometryWall->reflect(particles, frozenOfSpecies_, box, random_,
                                                            static_cast<std::uint64_t>(step), forceParameters.kT);
-        counts.reflected.resize(walls.size(), 0);
+        counts.returned.resize(walls.size(), 0);
         counts.crossed.resize(walls.size(), 0);
-        counts.reflected.push_back(g.returned);
+        counts.returned.push_back(g.returned);
         counts.crossed.push_back(g.crossed);
         counts.insideAfter += g.insideAfter;
     }

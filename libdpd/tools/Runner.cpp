@@ -180,11 +180,11 @@ private:
             // its plane after a move (for a bounce layer each of these is a failure of the layer).
             log_ << "    walls since last report:";
             for (std::size_t w = 0; w < sys.walls.size(); ++w)
-                log_ << " " << sys.walls[w].name << " returned " << (w < walls.reflected.size() ? walls.reflected[w] : 0)
+                log_ << " " << sys.walls[w].name << " returned " << (w < walls.returned.size() ? walls.returned[w] : 0)
                      << " crossed " << (w < walls.crossed.size() ? walls.crossed[w] : 0) << ";";
             const std::size_t g = sys.walls.size();  // the geometry wall's counts come last
             if (sys.geometryWall)
-                log_ << " geometry returned " << (g < walls.reflected.size() ? walls.reflected[g] : 0) << " crossed "
+                log_ << " geometry returned " << (g < walls.returned.size() ? walls.returned[g] : 0) << " crossed "
                      << (g < walls.crossed.size() ? walls.crossed[g] : 0) << ";";
             log_ << " left inside after a step " << walls.insideAfter << "; inside walls now " << m.insideWalls << "\n";
         }

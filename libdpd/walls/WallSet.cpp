@@ -40,7 +40,7 @@ void reflectAtPlane(const PlanarWall& w, double depth, Particles& p, std::size_t
 }
 
 struct RuleCounts {
-    long reflected = 0, crossed = 0;
+    long returned = 0, crossed = 0;
 };
 
 // A bounce-layer wall on mobile particle i: in the layer and moving towards the solid, it is turned
@@ -57,7 +57,7 @@ void bounceLayerParticle(const PlanarWall& w, Particles& p, std::size_t i, const
     } else {
         setVelocity(p, i, turnedRound(w.normal, velocityOf(p, i) - w.velocity, random, step, p.id[i], kT, kStreamReflection) + w.velocity);
     }
-    ++counts.reflected;
+    ++counts.returned;
 }
 
 // A wall whose rule acts at the plane, on mobile particle i: behind the plane, it is reflected (or,
@@ -68,7 +68,7 @@ void atPlaneParticle(const PlanarWall& w, std::uint32_t wallIndex, Particles& p,
     const double depth = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
     if (depth >= 0.0) return;
     ++counts.crossed;
-    ++counts.reflected;
+    ++counts.returned;
     if (w.rule == ReflectionRule::bounceForward) {
         const Eigen::Vector3d m = mirrored(w, p, i, depth);
 #pragma omp critical(dpdDeferredBounce)
@@ -84,18 +84,18 @@ template <class Visit>
 RuleCounts forParticlesNearWall(const PlanarWall& w, const Particles& p, const std::vector<std::uint8_t>& frozen,
                                 double reach, const Visit& visit) {
     const long n = static_cast<long>(p.size());
-    long reflected = 0, crossed = 0;
-#pragma omp parallel for reduction(+ : reflected, crossed) schedule(static)
+    long returned = 0, crossed = 0;
+#pragma omp parallel for reduction(+ : returned, crossed) schedule(static)
     for (long b = 0; b < n; b += kWallBlock) {
         const long e = std::min(b + kWallBlock, n);
         if (!anyWithin(w, p, b, e, reach)) continue;
         RuleCounts counts;
         for (long i = b; i < e; ++i)
             if (!frozen[p.species[i]]) visit(static_cast<std::size_t>(i), counts);
-        reflected += counts.reflected;
+        returned += counts.returned;
         crossed += counts.crossed;
     }
-    return {reflected, crossed};
+    return {returned, crossed};
 }
 
 RuleCounts applyBounceLayer(const PlanarWall& w, Particles& p, const std::vector<std::uint8_t>& frozen,
@@ -123,9 +123,9 @@ const DeferredBounce* findDeferred(const std::vector<DeferredBounce>& deferred, 
 }  // namespace
 
 void WallCounters::accumulate(const WallCounters& o) {
-    if (reflected.size() < o.reflected.size()) reflected.resize(o.reflected.size(), 0);
+    if (returned.size() < o.returned.size()) returned.resize(o.returned.size(), 0);
     if (crossed.size() < o.crossed.size()) crossed.resize(o.crossed.size(), 0);
-    for (std::size_t w = 0; w < o.reflected.size(); ++w) reflected[w] += o.reflected[w];
+    for (std::size_t w = 0; w < o.returned.size(); ++w) returned[w] += o.returned[w];
     for (std::size_t w = 0; w < o.crossed.size(); ++w) crossed[w] += o.crossed[w];
     insideAfter += o.insideAfter;
 }
@@ -194,7 +194,7 @@ WallCounters WallSet::reflect(Particles& p, const std::vector<std::uint8_t>& fro
                               const PairRandom& random, std::uint64_t step, double kT,
                               std::vector<DeferredBounce>& deferred) const {
     WallCounters counts;
-    counts.reflected.assign(walls_.size(), 0);
+    counts.returned.assign(walls_.size(), 0);
     counts.crossed.assign(walls_.size(), 0);
     deferred.clear();
     for (std::size_t k = 0; k < walls_.size(); ++k) {
@@ -203,7 +203,7 @@ WallCounters WallSet::reflect(Particles& p, const std::vector<std::uint8_t>& fro
         if (w.rule == ReflectionRule::none) continue;
         if (w.rule == ReflectionRule::bounceLayer) c = applyBounceLayer(w, p, frozen, box, random, step, kT);
         else c = applyAtPlane(w, static_cast<std::uint32_t>(k), p, frozen, box, random, step, kT, deferred);
-        counts.reflected[k] = c.reflected;
+        counts.returned[k] = c.returned;
         counts.crossed[k] = c.crossed;
     }
     // Threads append in any order: sort so the list (and its binary search) is the same on any count.

@@ -14,7 +14,7 @@ namespace dpd {
 struct WallCounters {
     // Per wall: particles the wall's rule turned back into the fluid (for bounceLayer: the particles
     // turned round inside the layer, plus those that crossed the plane all the same).
-    std::vector<long> reflected;
+    std::vector<long> returned;
     // Per wall: particles found behind the plane after the move. For the rules that act at the plane
     // this is how they work; for bounceLayer every one is a failure of the layer (it is too thin for
     // the step), mirrored back and counted here so the log shows it.

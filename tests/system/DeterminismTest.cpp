@@ -123,10 +123,10 @@ Particles run(const std::function<System()>& make, const std::string& scheme, in
     IntegratorSettings s;
     s.type = scheme;
     auto integrator = makeIntegrator(s);
-    long reflected = 0;
+    long returned = 0;
     for (int k = 0; k < steps; ++k)
-        for (long r : integrator->step(sys).reflected) reflected += r;
-    if (reflections) *reflections = reflected;
+        for (long r : integrator->step(sys).returned) returned += r;
+    if (reflections) *reflections = returned;
     return sys.particles;
 }
 
@@ -164,7 +164,7 @@ TEST(Determinism, OneAndTwoThreadsGiveIdenticalTrajectoriesInAChannel) {
         SCOPED_TRACE(scheme);
         long reflections = 0;
         const Particles one = run(make, scheme, 1, 50, &reflections);
-        EXPECT_GT(reflections, 0) << "the walls must have reflected something for the test to mean much";
+        EXPECT_GT(reflections, 0) << "the walls must have returned something for the test to mean much";
         const Particles two = run(make, scheme, 2, 50);
         expectIdentical(one, two);
     }

@@ -82,8 +82,8 @@ TEST(WallReflection, BounceBackReversesTheVelocityRelativeToTheWall) {
         const WallCounters c = makeIntegrator(s)->step(sys);
         expectVectorNear(position(sys), {5.01, 4.995, 2.05}, kTol, "position");
         expectVectorNear(velocity(sys), {-0.4, 0.9, 10.0}, kTol, "velocity");
-        ASSERT_EQ(c.reflected.size(), 1u);
-        EXPECT_EQ(c.reflected[0], 1);
+        ASSERT_EQ(c.returned.size(), 1u);
+        EXPECT_EQ(c.returned[0], 1);
         EXPECT_EQ(c.insideAfter, 0);
     }
 }
@@ -98,7 +98,7 @@ TEST(WallReflection, SpecularReversesTheNormalComponent) {
         const WallCounters c = gw.step(sys);
         expectVectorNear(position(sys), {3.02, 4.01, 7.98}, kTol, "position");
         expectVectorNear(velocity(sys), {2.0, 1.0, -5.0}, kTol, "velocity");
-        EXPECT_EQ(c.reflected[0], 1);
+        EXPECT_EQ(c.returned[0], 1);
     }
 }
 
@@ -109,13 +109,13 @@ TEST(WallReflection, WallsAlongOtherAxesAnd2D) {
     System sys2 = lonely(2, {wall({1.5, 0, 0}, {1, 0, 0}, ReflectionRule::bounceBack, {0, 0, 0.6})}, {1.52, 0.5, 5},
                          {-4, 0, 1});
     GrootWarrenIntegrator gw(0.65);
-    EXPECT_EQ(gw.step(sys2).reflected[0], 1);
+    EXPECT_EQ(gw.step(sys2).returned[0], 1);
     expectVectorNear(position(sys2), {1.52, 0.5, 5.01}, kTol, "position");
     expectVectorNear(velocity(sys2), {4.0, 0.0, 0.2}, kTol, "velocity");
     // 3-D wall y = 9 with normal -y, specular: from (5, 8.99, 5), v = (0, 3, -1): to (5, 9.02, 4.99),
     // mirrored to y = 8.98, velocity (0, -3, -1).
     System sys3 = lonely(3, {wall({0, 9, 0}, {0, -1, 0}, ReflectionRule::specular)}, {5, 8.99, 5}, {0, 3, -1});
-    EXPECT_EQ(gw.step(sys3).reflected[0], 1);
+    EXPECT_EQ(gw.step(sys3).returned[0], 1);
     expectVectorNear(position(sys3), {5, 8.98, 4.99}, kTol, "position");
     expectVectorNear(velocity(sys3), {0, -3, -1}, kTol, "velocity");
 }
@@ -127,19 +127,19 @@ TEST(WallReflection, CountersCountOnlyCrossings) {
     GrootWarrenIntegrator gw(0.65);
     System crossing = lonely(3, walls, {5, 5, 7.99}, {0, 0, 3});
     WallCounters c = gw.step(crossing);
-    ASSERT_EQ(c.reflected.size(), 2u);
-    EXPECT_EQ(c.reflected[0], 0);
-    EXPECT_EQ(c.reflected[1], 1);
+    ASSERT_EQ(c.returned.size(), 2u);
+    EXPECT_EQ(c.returned[0], 0);
+    EXPECT_EQ(c.returned[1], 1);
     EXPECT_EQ(c.insideAfter, 0);
     System staying = lonely(3, walls, {5, 5, 5}, {1, 2, -3});
     c = gw.step(staying);
-    EXPECT_EQ(c.reflected[0], 0);
-    EXPECT_EQ(c.reflected[1], 0);
+    EXPECT_EQ(c.returned[0], 0);
+    EXPECT_EQ(c.returned[1], 0);
     expectVectorNear(velocity(staying), {1, 2, -3}, 0.0, "untouched velocity");
     // With the rule "none" nothing is reflected and the particle is reported inside the solid.
     System none = lonely(3, {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::none)}, {5, 5, 2.01}, {0, 0, -3});
     c = gw.step(none);
-    EXPECT_EQ(c.reflected[0], 0);
+    EXPECT_EQ(c.returned[0], 0);
     EXPECT_EQ(c.insideAfter, 1);
     EXPECT_NEAR(position(none).z(), 1.98, kTol);
 }
@@ -156,7 +156,7 @@ TEST(WallReflection, WallOnTheBoxFaceStillReflects) {
     GrootWarrenIntegrator gw(0.65);
     System down = lonely(3, walls, {5, 5, 0.02}, {0, 0, -4});
     const WallCounters c = gw.step(down);
-    EXPECT_EQ(c.reflected[0], 1);
+    EXPECT_EQ(c.returned[0], 1);
     EXPECT_NEAR(position(down).z(), 0.02, kTol);
     EXPECT_NEAR(velocity(down).z(), 4.0, kTol);
     System up = lonely(3, walls, {5, 5, 9.98}, {0, 0, 4});
@@ -172,7 +172,7 @@ TEST(WallReflection, MaxwellianSingleParticle) {
         System sys = lonely(dimension, {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::maxwellian)},
                             {5, dimension == 3 ? 5.0 : 0.5, 2.05}, {1.0, 0.0, -10.0});
         GrootWarrenIntegrator gw(0.65);
-        EXPECT_EQ(gw.step(sys).reflected[0], 1);
+        EXPECT_EQ(gw.step(sys).returned[0], 1);
         EXPECT_NEAR(position(sys).z(), 2.05, kTol);
         EXPECT_GT(velocity(sys).z(), 0.0);
         if (dimension == 2) EXPECT_EQ(velocity(sys).y(), 0.0);
@@ -212,7 +212,7 @@ TEST(WallReflection, MaxwellianDistributionIsFluxWeightedAtTheWallTemperature) {
     sys.computeForces();
     GrootWarrenIntegrator gw(0.65);
     const WallCounters c = gw.step(sys);
-    EXPECT_EQ(c.reflected[0], m);
+    EXPECT_EQ(c.returned[0], m);
     EXPECT_EQ(c.insideAfter, 0);
 
     double sn = 0, sn2 = 0, sx = 0, sx2 = 0, sy = 0, sy2 = 0;

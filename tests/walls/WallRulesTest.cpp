@@ -75,7 +75,7 @@ TEST(WallRules, BounceForwardReversesTheVelocityAfterTheStep) {
     const WallCounters c = gw.step(forward);
     expectNear(pos(forward), {5.010025, 5.0, 2.05015}, "bounceForward position");
     expectNear(vel(forward), {-0.405, 0.4, 10.03}, "bounceForward velocity");
-    EXPECT_EQ(c.reflected[0], 1);
+    EXPECT_EQ(c.returned[0], 1);
     EXPECT_EQ(c.crossed[0], 1);
     EXPECT_EQ(c.insideAfter, 0);  // deferred, not left inside
     System back = lonely(makeWall("w", 2, 1, ReflectionRule::bounceBack, uw), {5, 5, 2.05}, {1, 0, -10}, 0.01, g);
@@ -95,13 +95,13 @@ TEST(WallRules, BounceLayerTurnsApproachingParticlesRound) {
     EXPECT_NEAR(vel(in).y(), -0.5, kTol);
     EXPECT_GT(vel(in).z(), 0.0);
     EXPECT_NEAR(pos(in).z(), 2.028, kTol);
-    EXPECT_EQ(c.reflected[0], 1);
+    EXPECT_EQ(c.returned[0], 1);
     EXPECT_EQ(c.crossed[0], 0);
     // In the layer, leaving: untouched. Outside the layer, approaching: untouched.
     System leaving = lonely(w, {5, 5, 2.03}, {1, 0.5, 2}, 0.001);
     c = gw.step(leaving);
     expectNear(vel(leaving), {1, 0.5, 2}, "leaving");
-    EXPECT_EQ(c.reflected[0], 0);
+    EXPECT_EQ(c.returned[0], 0);
     System outside = lonely(w, {5, 5, 2.2}, {1, 0.5, -2}, 0.001);
     c = gw.step(outside);
     expectNear(vel(outside), {1, 0.5, -2}, "outside");
@@ -113,7 +113,7 @@ TEST(WallRules, BounceLayerTurnsApproachingParticlesRound) {
     EXPECT_NEAR(pos(through).z(), 2.05, kTol);
     EXPECT_GT(vel(through).z(), 0.0);
     EXPECT_EQ(c.crossed[0], 1);
-    EXPECT_EQ(c.reflected[0], 1);
+    EXPECT_EQ(c.returned[0], 1);
     EXPECT_EQ(c.insideAfter, 0);
 }
 
@@ -200,18 +200,18 @@ TEST(WallRules, BounceLayerThermalisesTheNormalVelocityAndCountsItsFailures) {
         kx += 0.5 * (kineticTemperature(good, 0) + kineticTemperature(good, 1)) / 5.0;
     }
     std::printf("    bounce layer 0.1: normal kT %.4f (wall 1), tangential kT %.4f (gas 2), returned %ld, crossed %ld\n",
-                kz, kx, c.reflected[0] + c.reflected[1], c.crossed[0] + c.crossed[1]);
+                kz, kx, c.returned[0] + c.returned[1], c.crossed[0] + c.crossed[1]);
     EXPECT_NEAR(kz, 1.0, 4.0 * std::sqrt(2.0 / kGasParticles));
     EXPECT_NEAR(kx, 2.0, 4.0 * 2.0 * std::sqrt(2.0 / (2.0 * kGasParticles)));
-    EXPECT_GT(c.reflected[0], kGasParticles);
+    EXPECT_GT(c.returned[0], kGasParticles);
     EXPECT_EQ(c.crossed[0] + c.crossed[1], 0);
     EXPECT_EQ(c.insideAfter, 0);
 
     System thin = gas(ReflectionRule::bounceLayer, 1e-4, 1.0, 1.0, 0.01);
     const WallCounters t = run(thin, 500);
-    std::printf("    bounce layer 1e-4: returned %ld, crossed %ld\n", t.reflected[0] + t.reflected[1],
+    std::printf("    bounce layer 1e-4: returned %ld, crossed %ld\n", t.returned[0] + t.returned[1],
                 t.crossed[0] + t.crossed[1]);
-    EXPECT_GT(t.crossed[0] + t.crossed[1], (t.reflected[0] + t.reflected[1]) / 2);
+    EXPECT_GT(t.crossed[0] + t.crossed[1], (t.returned[0] + t.returned[1]) / 2);
     EXPECT_EQ(t.insideAfter, 0) << "crossings are mirrored back";
 }
 
