@@ -2,30 +2,39 @@
 
 #include "walls/WallVelocityRules.hpp"
 
+#include <iterator>
 #include <stdexcept>
+#include <utility>
 
 namespace dpd {
 
+namespace {
+
+// Every rule by the name a dictionary gives it, in the order the names are listed to users.
+constexpr std::pair<ReflectionRule, const char*> kRuleNames[] = {
+    {ReflectionRule::none, "none"},
+    {ReflectionRule::specular, "specular"},
+    {ReflectionRule::bounceBack, "bounceBack"},
+    {ReflectionRule::maxwellian, "maxwellian"},
+    {ReflectionRule::bounceLayer, "bounceLayer"},
+    {ReflectionRule::bounceForward, "bounceForward"},
+};
+
+}  // namespace
+
 ReflectionRule reflectionRuleFromName(const std::string& name) {
-    if (name == "none") return ReflectionRule::none;
-    if (name == "specular") return ReflectionRule::specular;
-    if (name == "bounceBack") return ReflectionRule::bounceBack;
-    if (name == "maxwellian") return ReflectionRule::maxwellian;
-    if (name == "bounceLayer") return ReflectionRule::bounceLayer;
-    if (name == "bounceForward") return ReflectionRule::bounceForward;
-    throw std::invalid_argument("unknown reflection rule '" + name +
-                                "' (expected none, specular, bounceBack, maxwellian, bounceLayer or bounceForward)");
+    std::string list;
+    const std::size_t n = std::size(kRuleNames);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (name == kRuleNames[k].second) return kRuleNames[k].first;
+        list += (k == 0 ? "" : (k + 1 == n ? " or " : ", ")) + std::string(kRuleNames[k].second);
+    }
+    throw std::invalid_argument("unknown reflection rule '" + name + "' (expected " + list + ")");
 }
 
 std::string reflectionRuleName(ReflectionRule rule) {
-    switch (rule) {
-        case ReflectionRule::none: return "none";
-        case ReflectionRule::specular: return "specular";
-        case ReflectionRule::bounceBack: return "bounceBack";
-        case ReflectionRule::maxwellian: return "maxwellian";
-        case ReflectionRule::bounceLayer: return "bounceLayer";
-        case ReflectionRule::bounceForward: return "bounceForward";
-    }
+    for (const auto& [r, name] : kRuleNames)
+        if (r == rule) return name;
     return "unknown";
 }
 
