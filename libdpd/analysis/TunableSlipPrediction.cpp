@@ -1,17 +1,17 @@
 #include "analysis/TunableSlipPrediction.hpp"
 
 #include "io/Dictionary.hpp"
-#include "walls/PlanarWall.hpp"
+#include "walls/PlanarWallSettings.hpp"
 
 #include <sstream>
 #include <vector>
 
 namespace dpd {
 
-TunableSlipPrediction predictTunableSlip(const PlanarWall& lower, const PlanarWall& upper, double density, double nu,
+TunableSlipPrediction predictTunableSlip(const PlanarWallSettings& lower, const PlanarWallSettings& upper, double density, double nu,
                                          const std::string& nuSource) {
     TunableSlipPrediction p;
-    const PlanarWall* walls[2] = {&lower, &upper};
+    const PlanarWallSettings* walls[2] = {&lower, &upper};
     for (int k = 0; k < 2; ++k) p.tunable[k] = walls[k]->hasTunableSlip;
     p.any = p.tunable[0] || p.tunable[1];
     if (!p.any) return p;

@@ -8,7 +8,7 @@
 namespace dpd {
 
 class Dictionary;
-struct PlanarWall;
+struct PlanarWallSettings;
 
 struct TunableSlipPrediction {
     bool any = false;                       // at least one of the two walls has tunable slip
@@ -22,7 +22,7 @@ struct TunableSlipPrediction {
 
 // The prediction for the walls that have tunable slip; `any` false (and nothing else set) when neither
 // has. Throws std::invalid_argument when a prediction is due but rho or nu is not positive.
-TunableSlipPrediction predictTunableSlip(const PlanarWall& lower, const PlanarWall& upper, double density, double nu,
+TunableSlipPrediction predictTunableSlip(const PlanarWallSettings& lower, const PlanarWallSettings& upper, double density, double nu,
                                          const std::string& nuSource);
 
 // fit.dat entries: slipLengthPredicted (lower upper), slipPredictionAlpha (lower upper) ("none" for a

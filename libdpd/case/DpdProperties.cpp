@@ -6,6 +6,8 @@
 #include "io/Dictionary.hpp"
 #include "io/Snapshot.hpp"
 #include "system/System.hpp"
+#include "walls/GeometryWall.hpp"
+#include "walls/WallTypes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -124,57 +126,18 @@ BodyForce readBodyForce(const Dictionary& d, int dimension) {
     return f;
 }
 
-// tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed.
-TunableSlipParameters readTunableSlip(const Dictionary& td) {
-    td.checkKeys({"gammaL", "zc", "epsilon", "sigma"});
-    TunableSlipParameters t;
-    t.gammaL = td.getNonNegative<double>("gammaL");
-    t.zc = td.getPositive<double>("zc");
-    t.epsilon = td.getPositive<double>("epsilon");
-    t.sigma = td.getPositive<double>("sigma");
-    return t;
-}
-
-PlanarWall readPlanarWall(const Dictionary& wd, const std::string& name, int dimension, double cutoff) {
-    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha", "tunableSlip"});
-    const std::string type = wd.get<std::string>("type");
-    if (type != "plane") wd.fail("type", "expected plane (the only wall shape so far)");
-    PlanarWall w;
-    w.name = name;
-    w.point = wd.get<Eigen::Vector3d>("point");
-    w.normal = wd.get<Eigen::Vector3d>("normal");
-    if (w.normal.norm() == 0.0) wd.fail("normal", "must not be zero");
-    w.normal.normalize();
-    if (dimension == 2 && w.normal.y() != 0.0) wd.fail("normal", "a 2-D scene lies in the x-z plane: the y component must be 0");
-    w.velocity = wd.getOrDefault<Eigen::Vector3d>("velocity", Eigen::Vector3d::Zero());
-    if (std::abs(w.velocity.dot(w.normal)) > 1e-12) wd.fail("velocity", "a wall can only slide in its own plane");
-    if (dimension == 2 && w.velocity.y() != 0.0) wd.fail("velocity", "a 2-D scene lies in the x-z plane: the y component must be 0");
-    if (wd.found("tunableSlip")) {
-        if (!wd.isDict("tunableSlip")) wd.fail("tunableSlip", "expected { gammaL ...; zc ...; epsilon ...; sigma ...; }");
-        w.hasTunableSlip = true;
-        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"));
-    }
-    // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
-    // since it adds no tangential friction of its own to the slip that gammaL sets.
-    const std::string defaultRule = w.hasTunableSlip ? "specular" : "bounceBack";
-    try {
-        w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", defaultRule));
-    } catch (const std::invalid_argument& e) {
-        wd.fail("reflection", e.what());
-    }
-    // The bounce layer's thickness in cutoffs (docs/walls.md 3.2 step 5: about 0.06-0.1 works).
-    if (w.rule == ReflectionRule::bounceLayer) w.layer = wd.getPositive<double>("alpha") * cutoff;
-    else if (wd.found("alpha")) wd.fail("alpha", "only a wall with reflection bounceLayer has a layer thickness alpha");
-    return w;
-}
-
-WallSet readWalls(const Dictionary& d, int dimension, double cutoff) {
-    WallSet walls;
+// Each wall names its type (walls/WallTypes.hpp), which reads the rest of its sub-dictionary.
+WallList readWalls(const Dictionary& d, int dimension, double cutoff) {
+    WallList walls;
     if (!d.found("walls")) return walls;
     const Dictionary& wd = d.subDict("walls");
     for (const std::string& name : wd.keys()) {
         if (!wd.isDict(name)) wd.fail(name, "each wall is a sub-dictionary");
-        walls.add(readPlanarWall(wd.subDict(name), name, dimension, cutoff));
+        const Dictionary& w = wd.subDict(name);
+        const std::string type = w.get<std::string>("type");
+        if (!wallRegistry().has(type))
+            w.fail("type", "unknown wall type '" + type + "' (expected " + wallRegistry().nameList() + ")");
+        walls.add(wallRegistry().make(type, w, WallReadContext{name, walls.size(), dimension, cutoff}));
     }
     return walls;
 }
@@ -267,21 +230,21 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
     sys.forceParameters = {model.cutoff, model.weightExponent, model.kT, dt};
     sys.seed = model.seed;
     sys.bodyForce = model.bodyForce;
-    sys.walls = model.walls;
+    sys.walls = model.walls;  // planar walls hold no state of their own: the list is shared
     sys.step = snapshot.step;
     sys.time = snapshot.time;
-    for (const auto& w : model.walls.walls())
+    for (const PlanarWallSettings* w : model.walls.planes())
         for (int a = 0; a < 3; ++a)
-            if (sys.box.isActiveAxis(a) && (w.point[a] < sys.box.lo[a] || w.point[a] > sys.box.hi[a]))
-                throw IoError("constant/dpdProperties: wall '" + w.name + "' has its point outside the box of " + snapshotFile);
+            if (sys.box.isActiveAxis(a) && (w->point[a] < sys.box.lo[a] || w->point[a] > sys.box.hi[a]))
+                throw IoError("constant/dpdProperties: wall '" + w->name + "' has its point outside the box of " + snapshotFile);
     const std::string thin = model.walls.thinWall(sys.box, model.cutoff);
     if (!thin.empty())
         throw IoError("constant/dpdProperties: the solid behind wall '" + thin + "' is thinner than one cutoff inside the box of " +
                       snapshotFile + " (fluid would interact through the wall across the periodic boundary)");
     if (model.geometryWall.geometry) {
         SolidRegion solid = readSolidRegion(*model.geometryWall.geometry, model.geometryWall.caseDir, sys.box, model.cutoff);
-        sys.geometryWall = std::make_shared<GeometryWall>(std::move(solid.distance), model.geometryWall.rule,
-                                                          model.geometryWall.layer);
+        sys.walls.add(std::make_shared<GeometryWall>(std::move(solid.distance), model.geometryWall.rule,
+                                                     model.geometryWall.layer));
     }
     sys.initialise();
     return sys;

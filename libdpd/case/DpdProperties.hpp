@@ -31,7 +31,8 @@
 #include "core/Species.hpp"
 #include "forces/BodyForce.hpp"
 #include "integrators/Integrator.hpp"
-#include "walls/WallSet.hpp"
+#include "walls/ReflectionRule.hpp"
+#include "walls/WallList.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -68,7 +69,7 @@ struct DpdModel {
     PairTable pairs;
     IntegratorSettings integrator;
     BodyForce bodyForce;
-    WallSet walls;
+    WallList walls;  // the walls block's walls (planar)
     GeometryWallSettings geometryWall;
     StabilitySettings stability;
     std::vector<std::string> pairNotes;  // pairs whose coefficients were mixed, for the log

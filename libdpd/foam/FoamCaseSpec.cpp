@@ -36,21 +36,21 @@ Box readMeshBox(const Dictionary& dict, const MakeFoamCaseInput& in, int dpdDime
 
 // The two planar walls facing each other along one axis (none is fine: a periodic box).
 void readWalls(const Dictionary& dpdProperties, const DpdModel& model, FoamCaseSpec& s) {
-    const auto& walls = model.walls.walls();
-    if (walls.empty()) return;
-    if (walls.size() != 2)
+    const std::vector<const PlanarWallSettings*> walls = model.walls.planes();
+    if (model.walls.empty()) return;
+    if (walls.size() != 2 || model.walls.size() != 2)
         dpdProperties.fail("walls", "the continuum case takes no walls or two planar walls facing each other, found " +
                                         std::to_string(walls.size()));
-    const int axis = walls[0].normalAxis();
-    if (axis < 0 || walls[1].normalAxis() != axis)
-        dpdProperties.fail("walls", "the walls '" + walls[0].name + "' and '" + walls[1].name +
+    const int axis = walls[0]->normalAxis();
+    if (axis < 0 || walls[1]->normalAxis() != axis)
+        dpdProperties.fail("walls", "the walls '" + walls[0]->name + "' and '" + walls[1]->name +
                                         "' are not both normal to the same axis x, y or z");
-    const PlanarWall* lo = &walls[0];
-    const PlanarWall* hi = &walls[1];
+    const PlanarWallSettings* lo = walls[0];
+    const PlanarWallSettings* hi = walls[1];
     if (lo->point[axis] > hi->point[axis]) std::swap(lo, hi);
     if (!(lo->normal[axis] > 0.0 && hi->normal[axis] < 0.0 && hi->point[axis] > lo->point[axis]))
         dpdProperties.fail("walls", "walls '" + lo->name + "' and '" + hi->name + "' do not face each other across a channel");
-    for (const PlanarWall* w : {lo, hi})
+    for (const PlanarWallSettings* w : {lo, hi})
         if (std::abs(w->velocity[axis]) > 0.0)
             dpdProperties.fail("walls", "wall '" + w->name + "' moves along its normal: no steady continuum case");
     s.wallAxis = axis;

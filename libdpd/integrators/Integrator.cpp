@@ -24,7 +24,7 @@ std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s) {
     return integratorRegistry().make(s.type, s.coeffs);
 }
 
-std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallSet& walls) {
+std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallList& walls) {
     auto integrator = makeIntegrator(s);
     const std::string why = integrator->unsupported(walls);
     if (!why.empty()) s.coeffs.fail("type", why);

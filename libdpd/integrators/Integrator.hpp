@@ -7,7 +7,7 @@
 // it cannot run. Adding a type adds its files and one line in integrators/IntegratorTypes.cpp.
 #include "core/Registry.hpp"
 #include "io/Dictionary.hpp"
-#include "walls/WallSet.hpp"
+#include "walls/WallList.hpp"
 
 #include <memory>
 #include <string>
@@ -24,7 +24,7 @@ public:
     // Returns what the walls did during the step.
     virtual WallCounters step(System& sys) = 0;
     // Why this scheme cannot run a scene with these walls; empty when it can.
-    virtual std::string unsupported(const WallSet&) const { return {}; }
+    virtual std::string unsupported(const WallList&) const { return {}; }
 };
 
 using IntegratorRegistry = Registry<Integrator, const Dictionary&>;
@@ -49,6 +49,6 @@ struct IntegratorSettings {
 // Throws std::invalid_argument for an unknown type, InputError for bad coefficients.
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s);
 // The same for a scene's walls: an InputError at the type's keyword when the scheme cannot run them.
-std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallSet& walls);
+std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallList& walls);
 
 }  // namespace dpd

@@ -23,7 +23,7 @@ public:
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "Shardlow"; }
     // Its sweep has no place yet for the tunable-slip wall's velocity-dependent force.
-    std::string unsupported(const WallSet& walls) const override;
+    std::string unsupported(const WallList& walls) const override;
     WallCounters step(System& sys) override;
 
 private:

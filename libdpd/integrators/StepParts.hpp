@@ -1,7 +1,7 @@
 #pragma once
 // The parts the integrators' steps are made of.
 #include "neighbour/CellList.hpp"
-#include "walls/WallSet.hpp"
+#include "walls/WallList.hpp"
 
 namespace dpd {
 

@@ -48,10 +48,11 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
         snap.speciesNames.push_back(model.species[s].name);
         snap.speciesFrozen.push_back(model.species[s].frozen);
     }
-    for (const auto& w : model.walls.walls())
+    const std::vector<const PlanarWallSettings*> walls = model.walls.planes();
+    for (const PlanarWallSettings* w : walls)
         for (int a = 0; a < 3; ++a)
-            if (snap.box.isActiveAxis(a) && (w.point[a] < snap.box.lo[a] || w.point[a] > snap.box.hi[a]))
-                d.fail("box", "wall '" + w.name + "' of constant/dpdProperties lies outside the box");
+            if (snap.box.isActiveAxis(a) && (w->point[a] < snap.box.lo[a] || w->point[a] > snap.box.hi[a]))
+                d.fail("box", "wall '" + w->name + "' of constant/dpdProperties lies outside the box");
     const std::string thin = model.walls.thinWall(snap.box, model.cutoff);
     if (!thin.empty())
         d.fail("box", "the solid behind wall '" + thin +
@@ -62,12 +63,11 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
     const int fluidSpecies = speciesIndex(fd, model, false);
     const double density = fd.getPositive<double>("density");
     const PairRandom random(model.seed);
-    const WallSet& walls = model.walls;
     // Fluid starts at least sigma in front of a tunable-slip wall: nearer, its WCA repulsion (more than
     // eps there, diverging at the plane) would throw the particle across the box on the first step.
     const auto clearOfWalls = [&](double x, double y, double z) {
-        for (const PlanarWall& w : walls.walls())
-            if (w.signedDistance(x, y, z) < (w.hasTunableSlip ? w.tunableSlip.sigma : 0.0)) return false;
+        for (const PlanarWallSettings* w : walls)
+            if (w->signedDistance(x, y, z) < (w->hasTunableSlip ? w->tunableSlip.sigma : 0.0)) return false;
         return true;
     };
     report.fluid = fillRandom(snap.particles, snap.box, snap.box.lo, snap.box.hi, density, fluidSpecies, clearOfWalls,
@@ -79,25 +79,25 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
 
     // Tunable-slip walls act on the fluid without frozen particles: when every wall is one, `wall` may
     // be left out.
-    const bool everyWallSmooth = std::all_of(walls.walls().begin(), walls.walls().end(),
-                                             [](const PlanarWall& w) { return w.hasTunableSlip; });
+    const bool everyWallSmooth =
+        std::all_of(walls.begin(), walls.end(), [](const PlanarWallSettings* w) { return w->hasTunableSlip; });
     if (!walls.empty() && !(everyWallSmooth && !d.found("wall"))) {
         if (!d.found("wall")) d.fail("wall", "constant/dpdProperties has walls: say how to build them");
         const Dictionary& wd = d.subDict("wall");
         const int wallSpecies = speciesIndex(wd, model, true);
         const FrozenLatticeSettings lattice = readLattice(wd, model);
-        for (const auto& w : walls.walls()) {
+        for (const PlanarWallSettings* w : walls) {
             std::vector<Eigen::Vector3d> points;
             try {
-                points = frozenLattice(snap.box, w, lattice);
+                points = frozenLattice(snap.box, *w, lattice);
             } catch (const std::invalid_argument& e) {
                 wd.fail("lattice", e.what());
             }
             for (const auto& r : points)
-                snap.particles.add(snap.particles.size(), wallSpecies, r.x(), r.y(), r.z(), w.velocity.x(),
-                                   w.velocity.y(), w.velocity.z());
+                snap.particles.add(snap.particles.size(), wallSpecies, r.x(), r.y(), r.z(), w->velocity.x(),
+                                   w->velocity.y(), w->velocity.z());
             report.frozenPerWall.push_back(points.size());
-            report.wallNames.push_back(w.name);
+            report.wallNames.push_back(w->name);
         }
     }
     return snap;

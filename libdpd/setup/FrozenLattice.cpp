@@ -13,7 +13,7 @@ struct WallFrame {
     std::vector<int> inPlane;    // active in-plane axes
 };
 
-WallFrame frameOf(const Box& box, const PlanarWall& wall) {
+WallFrame frameOf(const Box& box, const PlanarWallSettings& wall) {
     WallFrame f;
     f.normal = wall.normalAxis();
     if (f.normal < 0) throw std::invalid_argument("wall '" + wall.name + "': lattice walls need an axis-aligned normal");
@@ -31,7 +31,7 @@ double fittedSpacing(double length, double wanted) {
 
 // Adds points for a layer at `depth` behind the plane, with a 2-D (or 1-D in 2-D scenes) rectangular
 // grid in the plane, optionally offset by half a cell (for the staggered planes of FCC).
-void addLayer(std::vector<Eigen::Vector3d>& out, const Box& box, const PlanarWall& wall, const WallFrame& f,
+void addLayer(std::vector<Eigen::Vector3d>& out, const Box& box, const PlanarWallSettings& wall, const WallFrame& f,
               double depth, const std::vector<double>& spacing, const std::vector<double>& offset) {
     Eigen::Vector3d base = Eigen::Vector3d::Zero();
     base[f.normal] = wall.point[f.normal] - f.sign * depth;
@@ -51,7 +51,7 @@ void addLayer(std::vector<Eigen::Vector3d>& out, const Box& box, const PlanarWal
         }
 }
 
-std::vector<Eigen::Vector3d> cubicOrFcc(const Box& box, const PlanarWall& wall, const WallFrame& f,
+std::vector<Eigen::Vector3d> cubicOrFcc(const Box& box, const PlanarWallSettings& wall, const WallFrame& f,
                                         const FrozenLatticeSettings& s) {
     const bool fcc = s.lattice == "fcc";
     const int d = box.dimension;
@@ -86,7 +86,7 @@ std::vector<Eigen::Vector3d> cubicOrFcc(const Box& box, const PlanarWall& wall, 
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> frozenLattice(const Box& box, const PlanarWall& wall, const FrozenLatticeSettings& s) {
+std::vector<Eigen::Vector3d> frozenLattice(const Box& box, const PlanarWallSettings& wall, const FrozenLatticeSettings& s) {
     const WallFrame f = frameOf(box, wall);
     if (s.thickness <= 0.0) throw std::invalid_argument("the wall thickness must be positive");
     if (s.lattice == "fcc" || s.lattice == "simpleCubic") {

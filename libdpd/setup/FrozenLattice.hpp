@@ -5,7 +5,7 @@
 // spacing is adjusted slightly so that a whole number of cells fits the periodic box (the wall is
 // then seamless across the boundary); the density actually built is reported.
 #include "core/Box.hpp"
-#include "walls/PlanarWall.hpp"
+#include "walls/PlanarWallSettings.hpp"
 
 #include <Eigen/Core>
 #include <string>
@@ -23,6 +23,6 @@ struct FrozenLatticeSettings {
 
 // Positions of the frozen particles behind an axis-aligned wall. Throws std::invalid_argument with a
 // plain message for an oblique wall or impossible settings.
-std::vector<Eigen::Vector3d> frozenLattice(const Box& box, const PlanarWall& wall, const FrozenLatticeSettings& s);
+std::vector<Eigen::Vector3d> frozenLattice(const Box& box, const PlanarWallSettings& wall, const FrozenLatticeSettings& s);
 
 }  // namespace dpd

@@ -48,22 +48,22 @@ void channelFromModel(const Dictionary& d, const DpdModel& model, InitialFlow& f
         channelFromPositions(d, model, flow);
         return;
     }
-    const auto& walls = model.walls.walls();
-    if (walls.size() != 2)
+    const std::vector<const PlanarWallSettings*> walls = model.walls.planes();
+    if (walls.size() != 2 || model.walls.size() != 2)
         d.fail("type", "a poiseuille start needs exactly two planar walls in constant/dpdProperties (or, for the "
                        "walls of a geometry, axis and wallPositions)");
-    const int axis = walls[0].normalAxis();
-    if (axis < 0 || walls[1].normalAxis() != axis || walls[0].normal.dot(walls[1].normal) > -0.5)
+    const int axis = walls[0]->normalAxis();
+    if (axis < 0 || walls[1]->normalAxis() != axis || walls[0]->normal.dot(walls[1]->normal) > -0.5)
         d.fail("type", "a poiseuille start needs two parallel axis-aligned walls facing each other");
-    for (const auto& w : walls)
-        if (w.velocity.squaredNorm() > 0.0)
-            d.fail("type", "a poiseuille start needs walls at rest (wall '" + w.name + "' moves)");
+    for (const PlanarWallSettings* w : walls)
+        if (w->velocity.squaredNorm() > 0.0)
+            d.fail("type", "a poiseuille start needs walls at rest (wall '" + w->name + "' moves)");
     channelBodyForce(d, model, axis, flow);
     // The solid lies behind each wall: the wall whose normal points up the axis is the lower one.
-    const bool firstIsLower = walls[0].normal[axis] > 0.0;
+    const bool firstIsLower = walls[0]->normal[axis] > 0.0;
     flow.axis = axis;
-    flow.lower = (firstIsLower ? walls[0] : walls[1]).point[axis];
-    flow.upper = (firstIsLower ? walls[1] : walls[0]).point[axis];
+    flow.lower = (firstIsLower ? walls[0] : walls[1])->point[axis];
+    flow.upper = (firstIsLower ? walls[1] : walls[0])->point[axis];
 }
 
 // The periodic box of a reverse-Poiseuille start.

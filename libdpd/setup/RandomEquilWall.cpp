@@ -72,7 +72,7 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     const double dt = ed.getPositive<double>("deltaT");
     DpdModel fluidOnly = model;
     fluidOnly.bodyForce = BodyForce{};
-    fluidOnly.walls = WallSet{};
+    fluidOnly.walls = WallList{};
     fluidOnly.geometryWall = GeometryWallSettings{};  // the box is filled through the solid too
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict");
     const auto integrator = makeIntegrator(model.integrator);

@@ -16,13 +16,7 @@ FlowAxes FlowAxes::along(int axis) {
 
 FlowAxes flowAxesOf(const System& sys) {
     FlowAxes a;
-    for (std::size_t w = 0; w < sys.walls.size(); ++w)
-        if (sys.walls[w].normalAxis() >= 0) a.varies[sys.walls[w].normalAxis()] = true;
-    if (sys.geometryWall) {
-        const BackgroundGrid& g = sys.geometryWall->field().grid();
-        for (int k = 0; k < 3; ++k)
-            if (g.n[k] > 1 && sys.box.isActiveAxis(k)) a.varies[k] = true;
-    }
+    for (std::size_t w = 0; w < sys.walls.size(); ++w) sys.walls[w].markFlowAxes(sys.box, a.varies);
     if (sys.bodyForce.type == BodyForce::Type::reversePoiseuille) a.varies[sys.bodyForce.gradientAxis] = true;
     return a;
 }

@@ -61,7 +61,7 @@ void System::initialise() {
     random_ = PairRandom(seed);
     cells_.setup(box, forceParameters.cutoff);
     conservative_ = pairs.anyConservative();
-    tunableSlipWalls_ = walls.anyTunableSlip();
+    wallForces_ = walls.anyActsWithForces();
     pairKernel_ = conservative_ ? pairKernelFor<kConservativeTerm | kDissipativeTerm | kRandomTerm>(forceParameters)
                                 : pairKernelFor<kDissipativeTerm | kRandomTerm>(forceParameters);
     if (box.dimension == 2)
@@ -71,7 +71,7 @@ void System::initialise() {
         }
     frozenPerWall_ = walls.assignFrozenVelocities(particles, frozenOfSpecies_);
     wrapPositions();
-    if (geometryWall) geometryWall->recordPositions(particles, frozenOfSpecies_);
+    walls.recordPositions(particles, frozenOfSpecies_);
     initialised_ = true;
 }
 
@@ -96,7 +96,7 @@ void System::computeForces() { computeForces(0.0); }
 void System::computeForces(double predictorShift) {
     if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
     if (predictorShift != 0.0 && hasVelocityDependentNonPairForces())
-        throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with tunable-slip walls");
+        throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with walls that act with forces");
     const ScopedTimer timer(stepTimes ? &stepTimes->forces : nullptr);
     // The pair loop writes its forces over the old ones (with a predictor after reading them): no
     // pass clearing them first. The other forces are added to them.
@@ -106,40 +106,25 @@ void System::computeForces(double predictorShift) {
     pairKernel_(particles, ctx, forceParameters);
     forcesLeftBySort_ = false;  // written over by the pair forces
     bodyForce.apply(particles, frozenOfSpecies_, box);
-    if (tunableSlipWalls_)
-        walls.addTunableSlipForces(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
-                                   forceParameters.kT, forceParameters.dt);
+    if (wallForces_) {
+        WallStep s = wallStep();
+        walls.addForces(s);
+    }
+}
+
+WallStep System::wallStep() {
+    return {particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step), forceParameters.kT,
+            forceParameters.dt, deferredCrossings_};
 }
 
 WallCounters System::applyWalls() {
-    if (walls.empty() && !geometryWall) return {};
+    if (walls.empty()) return {};
     const ScopedTimer timer(stepTimes ? &stepTimes->walls : nullptr);
-    WallCounters counts;
-    if (!walls.empty())
-        counts = walls.reflect(particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step),
-                               forceParameters.kT, deferredBounces_);
-    if (geometryWall) {
-        const GeometryWallCounts g = geometryWall->reflect(particles, frozenOfSpecies_, box, random_,
-                                                           static_cast<std::uint64_t>(step), forceParameters.kT);
-        counts.returned.resize(walls.size(), 0);
-        counts.crossed.resize(walls.size(), 0);
-        counts.returned.push_back(g.returned);
-        counts.crossed.push_back(g.crossed);
-        counts.insideAfter += g.insideAfter;
-    }
-    return counts;
+    WallStep s = wallStep();
+    return walls.reflect(s);
 }
 
-void System::completeWalls() {
-    walls.completeBounceForward(particles, box, deferredBounces_);
-    deferredBounces_.clear();
-    // The geometry wall follows each particle's path through the next step from here.
-    if (geometryWall) geometryWall->recordPositions(particles, frozenOfSpecies_);
-}
-
-bool System::isInsideSolid(double x, double y, double z) const {
-    return walls.isInsideSolid(x, y, z) || (geometryWall && geometryWall->isInsideSolid(x, y, z));
-}
+void System::completeWalls() { walls.completeStep(particles, frozenOfSpecies_, box, deferredCrossings_); }
 
 std::size_t System::countMobile() const {
     std::size_t n = 0;

@@ -8,11 +8,9 @@
 #include "forces/DpdPairForce.hpp"
 #include "neighbour/CellList.hpp"
 #include "random/PairRandom.hpp"
-#include "walls/GeometryWall.hpp"
-#include "walls/WallSet.hpp"
+#include "walls/WallList.hpp"
 
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace dpd {
@@ -37,10 +35,7 @@ public:
     PairForceParameters forceParameters;  // cutoff, weight exponent, kT, dt
     std::uint64_t seed = 1;
     BodyForce bodyForce;
-    WallSet walls;
-    // A wall of any shape (the case's geometry block), acting after the planar walls; null without
-    // one, and then it costs nothing.
-    std::shared_ptr<GeometryWall> geometryWall;
+    WallList walls;  // in the order they act: the planar walls, then a wall of any shape (geometry)
     std::int64_t step = 0;
     double time = 0.0;
     StepTimes* stepTimes = nullptr;  // when set, the methods below add their times to it
@@ -68,24 +63,24 @@ public:
     // std::logic_error for a second Leave before the forces were computed again.
     void sortByCell(SortForces forces = SortForces::Move);
     // Forces at the current positions and velocities: pair forces (keyed to the current step's random
-    // numbers) plus the body force, plus the forces of tunable-slip walls when there are any. Requires sortByCell() since the last move.
+    // numbers) plus the body force, plus the forces of walls that act with forces (tunable slip).
+    // Requires sortByCell() since the last move.
     void computeForces();
     // The same with the velocities predicted as v + predictorShift f (f the forces held on entry;
     // frozen particles keep theirs), in the pair loop's pass over the particles: v itself is left
     // alone. Only where the pair forces are the only velocity-dependent ones (see below); throws
     // std::logic_error otherwise.
     void computeForces(double predictorShift);
-    // Whether any force but the pair forces depends on the velocities (tunable-slip walls' friction).
-    bool hasVelocityDependentNonPairForces() const { return tunableSlipWalls_; }
-    // Reflects fluid particles that crossed a wall during the last move (call before wrapping, that is
-    // before wrapPositions or sortByCell).
-    // The geometry wall's counts, if there is one, come last in the per-wall lists.
+    // Whether any force but the pair forces depends on the velocities (walls' forces, e.g. friction).
+    bool hasVelocityDependentNonPairForces() const { return wallForces_; }
+    // Each wall returns the fluid particles that crossed into it during the last move (call before
+    // wrapping, that is before wrapPositions or sortByCell). Counts per wall, in the list's order.
     WallCounters applyWalls();
-    // True if the point is inside the solid of a planar wall or of the geometry wall.
-    bool isInsideSolid(double x, double y, double z) const;
+    // True if the point is inside the solid of any wall.
+    bool isInsideSolid(double x, double y, double z) const { return walls.isInsideSolid({x, y, z}); }
     // Finishes what the walls left for the end of the step (bounce-forward crossings: mirrored and
-    // reversed with the velocity the step gave them). Every integrator calls it once the velocities
-    // of the step are complete.
+    // reversed with the velocity the step gave them) and lets them record where the next step starts.
+    // Every integrator calls it once the velocities of the step are complete.
     void completeWalls();
     // Moves the clock on by one step.
     void advanceClock() { ++step; time += forceParameters.dt; }
@@ -94,15 +89,17 @@ public:
     std::size_t countMobile() const;
 
 private:
+    WallStep wallStep();  // what the walls act on at this step
+
     using PairKernel = void (*)(Particles&, const PairLoopContext&, const PairForceParameters&);
     CellList cells_;
     PairRandom random_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     PairKernel pairKernel_ = nullptr;
-    std::vector<DeferredBounce> deferredBounces_;
+    std::vector<DeferredCrossing> deferredCrossings_;
     std::vector<long> frozenPerWall_;
     bool conservative_ = true;
-    bool tunableSlipWalls_ = false;  // some wall acts on the fluid with tunable-slip forces
+    bool wallForces_ = false;  // some wall acts on the fluid with forces
     bool initialised_ = false;
     bool forcesLeftBySort_ = false;  // the last sort left the forces behind (SortForces::Leave)
 };

@@ -55,12 +55,12 @@ void checkRecord(const Setup& s, const std::string& caseDir) {
     if (!sameVector(r.get<Eigen::Vector3d>("g"), g, g.norm()))
         r.fail("g", "differs from the body force of " + props.fileName() + ": rerun makeFoamCase");
     const std::string wallAxis = r.get<std::string>("wallAxis");
-    for (const PlanarWall& w : model.walls.walls()) {
+    for (const PlanarWallSettings* w : model.walls.planes()) {
         const int a = axisFromLetter(wallAxis);
-        const bool found = a >= 0 && (std::abs(r.subDict("lowerWall").get<double>("position") - w.point[a]) < 1e-9 ||
-                                      std::abs(r.subDict("upperWall").get<double>("position") - w.point[a]) < 1e-9);
-        if (!found || w.normalAxis() != a)
-            r.fail("wallAxis", "wall '" + w.name + "' of " + props.fileName() + " is not where the continuum case has its walls: rerun makeFoamCase");
+        const bool found = a >= 0 && (std::abs(r.subDict("lowerWall").get<double>("position") - w->point[a]) < 1e-9 ||
+                                      std::abs(r.subDict("upperWall").get<double>("position") - w->point[a]) < 1e-9);
+        if (!found || w->normalAxis() != a)
+            r.fail("wallAxis", "wall '" + w->name + "' of " + props.fileName() + " is not where the continuum case has its walls: rerun makeFoamCase");
     }
     const std::vector<TimeDirectory> times = listTimes(caseDir);
     for (auto it = times.rbegin(); it != times.rend(); ++it) {

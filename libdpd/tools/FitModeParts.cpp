@@ -21,18 +21,18 @@ std::string vectorText(const Eigen::Vector3d& v) {
 
 }  // namespace
 
-std::pair<const PlanarWall*, const PlanarWall*> channelWalls(const FitSlipLengthSetup& s, const ProfileTableData& t,
+std::pair<const PlanarWallSettings*, const PlanarWallSettings*> channelWalls(const FitSlipLengthSetup& s, const ProfileTableData& t,
                                                               int axis) {
-    std::vector<const PlanarWall*> walls;
-    for (const PlanarWall& w : s.model.walls.walls())
-        if (w.normalAxis() == axis) walls.push_back(&w);
+    std::vector<const PlanarWallSettings*> walls;
+    for (const PlanarWallSettings* w : s.model.walls.planes())
+        if (w->normalAxis() == axis) walls.push_back(w);
     if (walls.size() != 2)
         s.dpdProperties.fail("walls", "mode " + s.mode->name() + " needs exactly two planar walls with normals along " +
                                           t.axisName() + " (the axis of " + t.file + "), found " +
                                           std::to_string(walls.size()));
     if (walls[0]->point[axis] > walls[1]->point[axis]) std::swap(walls[0], walls[1]);
-    const PlanarWall& lower = *walls[0];
-    const PlanarWall& upper = *walls[1];
+    const PlanarWallSettings& lower = *walls[0];
+    const PlanarWallSettings& upper = *walls[1];
     if (!(lower.normal[axis] > 0.0 && upper.normal[axis] < 0.0 && upper.point[axis] > lower.point[axis]))
         s.dpdProperties.fail("walls", "walls '" + lower.name + "' and '" + upper.name +
                                           "' do not face each other across a channel along " + t.axisName());
@@ -44,10 +44,10 @@ ChannelBounds channelBounds(const FitSlipLengthSetup& s, const ProfileTableData&
         const auto [lower, upper] = channelWalls(s, t, axis);
         return {lower->point[axis], upper->point[axis], lower->velocity[s.component], upper->velocity[s.component]};
     }
-    for (const PlanarWall& w : s.model.walls.walls())
-        if (w.normalAxis() == axis)
+    for (const PlanarWallSettings* w : s.model.walls.planes())
+        if (w->normalAxis() == axis)
             s.dict.fail("wallPositions", "the case has planar walls with normals along " + t.axisName() + " ('" +
-                                             w.name + "' in " + s.dpdProperties.fileName() +
+                                             w->name + "' in " + s.dpdProperties.fileName() +
                                              "): their positions are used; wallPositions is for the walls of a "
                                              "geometry block");
     return {s.wallLow, s.wallHigh, 0.0, 0.0};

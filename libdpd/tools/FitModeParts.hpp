@@ -4,7 +4,7 @@
 #include "analysis/PoiseuilleFit.hpp"
 #include "io/Dictionary.hpp"
 #include "sampling/ProfileTable.hpp"
-#include "walls/PlanarWall.hpp"
+#include "walls/PlanarWallSettings.hpp"
 
 #include <stdexcept>
 #include <utility>
@@ -14,7 +14,7 @@ namespace dpd {
 struct FitSlipLengthSetup;
 
 // The two planar walls facing each other across the profile's axis, lower first.
-std::pair<const PlanarWall*, const PlanarWall*> channelWalls(const FitSlipLengthSetup& s, const ProfileTableData& t,
+std::pair<const PlanarWallSettings*, const PlanarWallSettings*> channelWalls(const FitSlipLengthSetup& s, const ProfileTableData& t,
                                                               int axis);
 
 // The channel's two walls along the profile's axis, as the fits need them: the planar walls of

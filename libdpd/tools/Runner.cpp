@@ -69,23 +69,10 @@ Snapshot snapshotOf(const System& sys) {
 
 void printWalls(std::ostream& log, const System& sys) {
     for (std::size_t w = 0; w < sys.walls.size(); ++w) {
-        const PlanarWall& wall = sys.walls[w];
-        log << "    " << wall.name << ": reflection " << reflectionRuleName(wall.rule);
-        if (wall.rule == ReflectionRule::bounceLayer) log << " (layer " << wall.layer << ")";
-        if (wall.hasTunableSlip) {
-            const TunableSlipParameters& t = wall.tunableSlip;
-            log << ", tunable slip (gammaL " << t.gammaL << ", zc " << t.zc << ", WCA epsilon " << t.epsilon
-                << ", sigma " << t.sigma << ")";
-        }
-        log << ", velocity " << vectorText(wall.velocity) << ", " << sys.frozenPerWall()[w]
-            << " frozen particles moving with it\n";
-    }
-    if (sys.geometryWall) {
-        const GeometryWall& g = *sys.geometryWall;
-        log << "    geometry: reflection " << reflectionRuleName(g.rule());
-        if (g.rule() == ReflectionRule::bounceLayer) log << " (layer " << g.layer() << ")";
-        log << ", distance field " << g.field().grid().n[0] << " x " << g.field().grid().n[1] << " x "
-            << g.field().grid().n[2] << " cells\n";
+        const Wall& wall = sys.walls[w];
+        log << "    " << wall.name() << ": " << wall.description();
+        if (wall.carriesFrozenParticles()) log << ", " << sys.frozenPerWall()[w] << " frozen particles moving with it";
+        log << "\n";
     }
 }
 
@@ -105,7 +92,7 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
         << "Integrator     : " << integrator.name() << ", deltaT " << control.deltaT << "\n"
         << "Pair force     : dissipative + random" << (sys.usesConservativeForce() ? " + conservative" : "")
         << (sys.forceParameters.weightExponent == 2.0 ? "" : ", generalised weight") << "\n"
-        << "Walls          : " << sys.walls.size() + (sys.geometryWall ? 1 : 0) << "\n";
+        << "Walls          : " << sys.walls.size() << "\n";
     printWalls(log, sys);
     for (const std::string& note : pairNotes) log << "Pair mixed     : " << note << "\n";
     log << "Body force     : " << (sys.bodyForce.active() ? vectorText(sys.bodyForce.g) : std::string("none")) << "\n"
@@ -175,17 +162,13 @@ private:
         log_ << "Time = " << timeName(sys.time) << "  (step " << sys.step << ")\n"
              << "    kT = " << std::setprecision(6) << m.kT << "   momentum = " << vectorText(m.momentum)
              << "   meanVelocity = " << vectorText(m.meanVelocity) << "\n";
-        if (!sys.walls.empty() || sys.geometryWall) {
-            // Since the last report: particles each wall's rule returned, and particles found behind
-            // its plane after a move (for a bounce layer each of these is a failure of the layer).
+        if (!sys.walls.empty()) {
+            // Since the last report: particles each wall's rule returned, and particles found in its
+            // solid after a move (for a bounce layer each of these is a failure of the layer).
             log_ << "    walls since last report:";
             for (std::size_t w = 0; w < sys.walls.size(); ++w)
-                log_ << " " << sys.walls[w].name << " returned " << (w < walls.returned.size() ? walls.returned[w] : 0)
+                log_ << " " << sys.walls[w].name() << " returned " << (w < walls.returned.size() ? walls.returned[w] : 0)
                      << " crossed " << (w < walls.crossed.size() ? walls.crossed[w] : 0) << ";";
-            const std::size_t g = sys.walls.size();  // the geometry wall's counts come last
-            if (sys.geometryWall)
-                log_ << " geometry returned " << (g < walls.returned.size() ? walls.returned[g] : 0) << " crossed "
-                     << (g < walls.crossed.size() ? walls.crossed[g] : 0) << ";";
             log_ << " left inside after a step " << walls.insideAfter << "; inside walls now " << m.insideWalls << "\n";
         }
         log_ << "    ExecutionTime = " << std::setprecision(5) << elapsed << " s   steps/s = " << std::setprecision(4)

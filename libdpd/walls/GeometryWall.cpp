@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace dpd {
@@ -36,7 +37,7 @@ Eigen::Vector3d minimumImage(Eigen::Vector3d d, const Box& box) {
 }  // namespace
 
 GeometryWall::GeometryWall(SignedDistanceField field, ReflectionRule rule, double layer)
-    : field_(std::move(field)), rule_(rule), layer_(layer) {
+    : Wall("geometry"), field_(std::move(field)), rule_(rule), layer_(layer) {
     if (rule_ == ReflectionRule::bounceForward)
         throw std::invalid_argument("bounceForward is for planar walls only");
     const BackgroundGrid& g = field_.grid();
@@ -44,6 +45,20 @@ GeometryWall::GeometryWall(SignedDistanceField field, ReflectionRule rule, doubl
     for (int a = 0; a < 3; ++a)
         if (g.n[a] > 1 && (probeSpacing_ == 0.0 || 0.5 * g.spacing[a] < probeSpacing_)) probeSpacing_ = 0.5 * g.spacing[a];
     if (probeSpacing_ == 0.0) probeSpacing_ = 0.5 * g.spacing.minCoeff();
+}
+
+std::string GeometryWall::description() const {
+    std::ostringstream os;
+    os << "reflection " << reflectionRuleName(rule_);
+    if (rule_ == ReflectionRule::bounceLayer) os << " (layer " << layer_ << ")";
+    const BackgroundGrid& g = field_.grid();
+    os << ", distance field " << g.n[0] << " x " << g.n[1] << " x " << g.n[2] << " cells";
+    return os.str();
+}
+
+void GeometryWall::markFlowAxes(const Box& box, std::array<bool, 3>& varies) const {
+    for (int k = 0; k < 3; ++k)
+        if (field_.grid().n[k] > 1 && box.isActiveAxis(k)) varies[k] = true;
 }
 
 void GeometryWall::recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozen) {
@@ -104,8 +119,13 @@ bool GeometryWall::returnParticle(Particles& p, std::size_t i, const Entry& entr
     return field_.distance(back) >= 0.0;
 }
 
-GeometryWallCounts GeometryWall::reflect(Particles& p, const std::vector<std::uint8_t>& frozen, const Box& box,
-                                         const PairRandom& random, std::uint64_t step, double kT) const {
+WallCount GeometryWall::reflect(WallStep& s, std::uint32_t) const {
+    Particles& p = s.particles;
+    const std::vector<std::uint8_t>& frozen = s.frozenOfSpecies;
+    const Box& box = s.box;
+    const PairRandom& random = s.random;
+    const std::uint64_t step = s.step;
+    const double kT = s.kT;
     const long n = static_cast<long>(p.size());
     long returned = 0, crossed = 0, inside = 0;
     const bool act = rule_ != ReflectionRule::none;

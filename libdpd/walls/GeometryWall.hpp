@@ -13,24 +13,16 @@
 // the particle would have stepped right over it. The mirror plane is the surface's tangent plane on
 // the side the particle came from, so a particle past the middle of a thin feature still goes back
 // the way it came instead of out through the far side.
-#include "core/Box.hpp"
-#include "core/Particles.hpp"
 #include "geometry/SignedDistanceField.hpp"
-#include "random/PairRandom.hpp"
-#include "walls/PlanarWall.hpp"
+#include "walls/ReflectionRule.hpp"
+#include "walls/Wall.hpp"
 
 #include <cstdint>
 #include <vector>
 
 namespace dpd {
 
-struct GeometryWallCounts {
-    long returned = 0;     // particles turned back into the fluid (crossings and bounce-layer turns)
-    long crossed = 0;      // particles whose step entered the solid
-    long insideAfter = 0;  // particles still inside the solid once the wall has acted
-};
-
-class GeometryWall {
+class GeometryWall : public Wall {
 public:
     // rule: any reflection rule but bounceForward; layer: the bounce layer's thickness (bounceLayer).
     GeometryWall(SignedDistanceField field, ReflectionRule rule, double layer);
@@ -38,15 +30,15 @@ public:
     ReflectionRule rule() const { return rule_; }
     double layer() const { return layer_; }
     const SignedDistanceField& field() const { return field_; }
-    bool isInsideSolid(double x, double y, double z) const { return field_.distance({x, y, z}) < 0.0; }
+    std::string description() const override;
+    double signedDistance(const Eigen::Vector3d& r) const override { return field_.distance(r); }
+    // The flow may vary along every active axis the field resolves.
+    void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;
 
-    // Remembers where every mobile particle stands (by id): the start of the next step's path. Call
-    // once the step is complete (positions wrapped) and before the first step.
-    void recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies);
-    // Applies the rule to the mobile particles after a move (before positions wrap). Random draws are
-    // keyed by (seed, step, id), so the outcome does not depend on the thread count.
-    GeometryWallCounts reflect(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies, const Box& box,
-                               const PairRandom& random, std::uint64_t step, double kT) const;
+    // Remembers where every mobile particle stands (by id): the start of the next step's path.
+    void recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies) override;
+    // Applies the rule to the mobile particles whose path entered the solid.
+    WallCount reflect(WallStep& s, std::uint32_t index) const override;
 
 private:
     struct Entry {

@@ -1,39 +1,41 @@
 #pragma once
-// A planar wall: the solid is the half-space behind the plane, the normal points into the fluid.
-// Fluid particles that end a step behind the plane are put back by mirroring their position across
-// it, and their velocity, taken relative to the wall's, is changed by the wall's reflection rule
-// (docs/walls.md section 3.3).
-//
-// A moving wall slides in its own plane (its velocity has no normal component), so the plane maps
-// onto itself and only the wall's frozen particles move: they carry the wall's velocity
-// (WallSet::assignFrozenVelocities) and drift with it like any particle.
-#include "walls/ReflectionRule.hpp"
-#include "walls/TunableSlipWall.hpp"
+// A planar wall (docs/walls.md 3.3): the solid is the half-space behind the plane. Fluid particles that
+// end a step behind it are mirrored back across the plane, and their velocity, taken relative to the
+// wall's, is changed by the wall's reflection rule; with bounceLayer, particles in the layer in front
+// of the plane moving towards it are turned round first. A sliding wall carries its frozen particles.
+#include "walls/PlanarWallSettings.hpp"
+#include "walls/Wall.hpp"
 
-#include <Eigen/Core>
-#include <string>
+#include <memory>
 
 namespace dpd {
 
+class Dictionary;
+struct WallReadContext;
 
-struct PlanarWall {
-    std::string name;
-    Eigen::Vector3d point{0, 0, 0};
-    Eigen::Vector3d normal{0, 0, 1};  // unit vector into the fluid
-    Eigen::Vector3d velocity{0, 0, 0};
-    ReflectionRule rule = ReflectionRule::bounceBack;
-    double layer = 0.0;  // bounceLayer: thickness of the layer in front of the plane (alpha x cutoff)
-    // A smooth tunable-slip wall (Smiatek et al. 2008) acting on the fluid in front of the plane, in
-    // place of frozen particles; the reflection rule stays as a safety net behind its WCA repulsion.
-    bool hasTunableSlip = false;
-    TunableSlipParameters tunableSlip;
+class PlanarWall : public Wall {
+public:
+    explicit PlanarWall(PlanarWallSettings settings);
+    // `type plane;` (walls/PlanarWallDictionary.cpp): point, normal, velocity, reflection, alpha, and
+    // with a tunableSlip block a TunableSlipWall.
+    static std::unique_ptr<Wall> New(const Dictionary& dict, const WallReadContext& context);
 
-    // Positive on the fluid side, negative inside the solid.
-    double signedDistance(double x, double y, double z) const {
-        return (x - point.x()) * normal.x() + (y - point.y()) * normal.y() + (z - point.z()) * normal.z();
-    }
-    // The axis the normal lies along, or -1 if the wall is oblique.
-    int normalAxis() const;
+    const PlanarWallSettings& settings() const { return settings_; }
+    std::string description() const override;
+    double signedDistance(const Eigen::Vector3d& r) const override { return settings_.signedDistance(r.x(), r.y(), r.z()); }
+    const PlanarWallSettings* plane() const override { return &settings_; }
+    void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;
+    bool carriesFrozenParticles() const override { return true; }
+    Eigen::Vector3d velocity() const override { return settings_.velocity; }
+    WallCount reflect(WallStep& s, std::uint32_t index) const override;
+    void completeCrossing(Particles& p, std::size_t i, const DeferredCrossing& d, const Box& box) const override;
+
+private:
+    PlanarWallSettings settings_;
 };
+
+// A planar wall of these settings: a TunableSlipWall when they have tunable slip. index: its place in
+// the list of walls.
+std::unique_ptr<Wall> makePlanarWall(PlanarWallSettings settings, std::size_t index);
 
 }  // namespace dpd

@@ -1,59 +1,23 @@
 #pragma once
-// The tunable-slip wall of Smiatek, Allen and Schmid (Eur. Phys. J. E 26, 115 (2008); docs/walls.md 3.5):
-// a smooth plane that acts on each fluid particle at distance z in front of it with
-//   - a dissipative force  F^D = -gamma_L w_L(z) (v - v_wall),
-//   - a random force       F^R = sqrt(2 kT gamma_L w_L(z)) xi / sqrt(dt),   w_L(z) = 1 - z/z_c (z < z_c),
-//     xi a vector of independent unit-variance Gaussians (one per active axis), so that the pair
-//     F^D, F^R obeys fluctuation-dissipation with the wall as a heat bath at kT;
-//   - a purely repulsive WCA force from V(z) = 4 eps [(s/z)^12 - (s/z)^6 + 1/4] for z < 2^(1/6) s,
-//     which keeps the fluid off the plane (it diverges there).
-// gamma_L sets the wall friction and with it the slip length; the predicted slip length is
-//   b / z_c = 2/alpha - 7/15 - 19 alpha / 1800 + ...,   alpha = z_c^2 gamma_L rho / eta.
-#include <Eigen/Core>
-
-#include <cstddef>
-#include <cstdint>
-#include <vector>
+// A planar wall with the tunable-slip forces of Smiatek et al. (walls/TunableSlipParameters.hpp,
+// docs/walls.md 3.5) on the fluid in front of it; its reflection rule stays as a safety net behind
+// the WCA repulsion.
+#include "walls/PlanarWall.hpp"
 
 namespace dpd {
 
-struct Box;
-class PairRandom;
-struct Particles;
-struct PlanarWall;
+class TunableSlipWall : public PlanarWall {
+public:
+    // index: the wall's place in its list, which keeps its random stream apart from other walls'.
+    TunableSlipWall(PlanarWallSettings settings, std::size_t index);
 
-struct TunableSlipParameters {
-    double gammaL = 0.0;   // wall friction coefficient
-    double zc = 1.0;       // range of the friction layer in front of the plane
-    double epsilon = 1.0;  // WCA energy
-    double sigma = 0.5;    // WCA length: the repulsion acts for z < 2^(1/6) sigma
+    bool actsWithForces() const override { return true; }
+    // Adds the wall's force to every mobile particle in front of it, within its reach (max of z_c and
+    // the WCA range). Particles behind the plane feel nothing: the reflection rule returns them.
+    void addForces(WallStep& s) const override;
 
-    double wcaRange() const;
-    // w_L(z) = 1 - z/z_c for 0 <= z < z_c, else 0.
-    double frictionWeight(double z) const;
-    // -dV/dz for 0 < z < 2^(1/6) sigma, else 0 (positive: pushes into the fluid).
-    double wcaForce(double z) const;
-    // The force on a particle at distance z (> 0) in front of a wall with unit normal n into the fluid,
-    // moving at vRelative to the wall; xi are its unit-variance random numbers for this step.
-    Eigen::Vector3d force(double z, const Eigen::Vector3d& n, const Eigen::Vector3d& vRelative, const Eigen::Vector3d& xi,
-                          double kT, double dt) const;
+private:
+    std::uint32_t stream_;
 };
-
-// The random-number stream of tunable-slip wall k (RandomStream kStreamTunableSlip in its low byte,
-// the wall's index above it): two walls that both reach a particle draw independent numbers.
-std::uint32_t tunableSlipStream(std::size_t wallIndex);
-
-// Adds the wall's force to every mobile particle in front of it, within its reach (max of z_c and the
-// WCA range). Random numbers are keyed by (seed, step, particle id, wall), so the forces do not depend
-// on the thread count. Particles behind the plane feel nothing: the wall's reflection rule returns them.
-void addTunableSlipForces(const PlanarWall& wall, std::size_t wallIndex, Particles& p,
-                          const std::vector<std::uint8_t>& frozenOfSpecies, const Box& box, const PairRandom& random,
-                          std::uint64_t step, double kT, double dt);
-
-// Predicted slip length b = z_c (2/alpha - 7/15 - 19 alpha/1800), alpha = z_c^2 gamma_L rho / eta, measured
-// from the plane; eta = rho nu is the fluid's dynamic viscosity. Throws std::invalid_argument unless
-// gamma_L, z_c, rho and eta are positive.
-double tunableSlipAlpha(double gammaL, double zc, double rho, double eta);
-double predictedTunableSlipLength(double gammaL, double zc, double rho, double eta);
 
 }  // namespace dpd

@@ -5,14 +5,14 @@
 // that the compiler vectorises. Few blocks hold one: those near the wall, and those of the walls' own
 // frozen particles.
 #include "core/Particles.hpp"
-#include "walls/PlanarWall.hpp"
+#include "walls/PlanarWallSettings.hpp"
 
 namespace dpd {
 
 inline constexpr long kWallBlock = 16;
 
 // Whether any of particles [begin, end) is less than `reach` in front of wall w (or behind it).
-inline bool anyWithin(const PlanarWall& w, const Particles& p, long begin, long end, double reach) {
+inline bool anyWithin(const PlanarWallSettings& w, const Particles& p, long begin, long end, double reach) {
     bool any = false;
     for (long i = begin; i < end; ++i) any |= w.signedDistance(p.rx[i], p.ry[i], p.rz[i]) < reach;
     return any;

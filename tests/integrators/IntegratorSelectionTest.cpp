@@ -68,13 +68,13 @@ TEST(IntegratorSelection, LambdaBelongsToGrootWarrenOnly) {
 
 // Each type says which scenes it cannot run, as an input error at its type keyword.
 TEST(IntegratorSelection, ShardlowRefusesTunableSlipWalls) {
-    WallSet walls;
-    walls.add(PlanarWall{});
+    WallList walls;
+    walls.addPlane(PlanarWallSettings{});
     const IntegratorSettings shardlow = IntegratorSettings::parse("type Shardlow;");
     EXPECT_NO_THROW(makeIntegrator(shardlow, walls));
-    PlanarWall w;
+    PlanarWallSettings w;
     w.hasTunableSlip = true;
-    walls.add(w);
+    walls.addPlane(w);
     try {
         makeIntegrator(shardlow, walls);
         FAIL() << "Shardlow must refuse tunable-slip walls";

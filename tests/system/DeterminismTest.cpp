@@ -83,19 +83,19 @@ System channel(std::uint64_t seed, double fluidWallA = 25.0) {
     sys.pairs.set(1, 1, {25.0, 4.5, 0.0, true});
     sys.forceParameters = {1.0, 2.0, 1.0, 0.04};
     sys.seed = seed;
-    PlanarWall lower;
+    PlanarWallSettings lower;
     lower.name = "lower";
     lower.point = Eigen::Vector3d(0, 0, 1.0);
     lower.normal = Eigen::Vector3d(0, 0, 1);
     lower.rule = ReflectionRule::maxwellian;
-    PlanarWall upper;
+    PlanarWallSettings upper;
     upper.name = "upper";
     upper.point = Eigen::Vector3d(0, 0, 10.0);
     upper.normal = Eigen::Vector3d(0, 0, -1);
     upper.velocity = Eigen::Vector3d(0.5, 0, 0);
     upper.rule = ReflectionRule::bounceBack;
-    sys.walls.add(lower);
-    sys.walls.add(upper);
+    sys.walls.addPlane(lower);
+    sys.walls.addPlane(upper);
     sys.bodyForce.type = BodyForce::Type::uniform;
     sys.bodyForce.g = Eigen::Vector3d(0.2, 0, 0);
     const PairRandom random(seed);
@@ -107,7 +107,7 @@ System channel(std::uint64_t seed, double fluidWallA = 25.0) {
     lattice.density = 3.0;
     lattice.thickness = 1.0;
     std::uint64_t id = 1000000;
-    for (const PlanarWall& w : {lower, upper})
+    for (const PlanarWallSettings& w : {lower, upper})
         for (const Eigen::Vector3d& r : frozenLattice(sys.box, w, lattice))
             sys.particles.add(id++, 1, r.x(), r.y(), r.z(), w.velocity.x(), w.velocity.y(), w.velocity.z());
     sys.initialise();

@@ -32,9 +32,9 @@ TunableSlipParameters slip(double gammaL, double zc, double epsilon, double sigm
     return t;
 }
 
-PlanarWall tunableWall(const std::string& name, double z, double normalZ, const TunableSlipParameters& t,
+PlanarWallSettings tunableWall(const std::string& name, double z, double normalZ, const TunableSlipParameters& t,
                        const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero()) {
-    PlanarWall w;
+    PlanarWallSettings w;
     w.name = name;
     w.point = Eigen::Vector3d(0, 0, z);
     w.normal = Eigen::Vector3d(0, 0, normalZ);
@@ -62,8 +62,8 @@ System channel(const TunableSlipParameters& t, double h, double lx, double densi
         sys.bodyForce.type = BodyForce::Type::uniform;
         sys.bodyForce.g = Eigen::Vector3d(g, 0, 0);
     }
-    sys.walls.add(tunableWall("lower", -h, 1, t));
-    sys.walls.add(tunableWall("upper", h, -1, t, upperVelocity));
+    sys.walls.addPlane(tunableWall("lower", -h, 1, t));
+    sys.walls.addPlane(tunableWall("upper", h, -1, t, upperVelocity));
     const PairRandom random(sys.seed);
     // Start clear of the WCA range, so no particle begins on the steep part of the potential.
     const double margin = std::max(0.6, t.wcaRange());
@@ -133,7 +133,7 @@ TEST(TunableSlipWall, SystemAddsTheWallForceRelativeToTheWallVelocity) {
     sys.forceParameters = {1.0, 2.0, 1.0, 0.01};
     sys.seed = 5;
     sys.step = 17;
-    sys.walls.add(tunableWall("upper", 8.0, -1, slip(2.0, 1.0, 1.0, 0.5), {0.5, 0, 0}));
+    sys.walls.addPlane(tunableWall("upper", 8.0, -1, slip(2.0, 1.0, 1.0, 0.5), {0.5, 0, 0}));
     sys.particles.add(42, 0, 5, 5, 7.25, 1.5, 0.2, -0.1);
     sys.particles.add(43, 0, 1, 1, 2.0, 1.0, 1.0, 1.0);  // 6 from the wall, beyond the cutoff of 42
     sys.initialise();
@@ -204,7 +204,7 @@ TEST(TunableSlipWall, WcaCollisionIsIntegrableWhenDtIsAFiftiethOfSigma) {
         double worst = 0.0;
         for (int phase = 0; phase < 50; ++phase) {
             const double speed = std::sqrt(30.0);
-            PlanarWall w = tunableWall("lower", 0.0, 1, slip(0.0, 1.0, 1.0, sigma));
+            PlanarWallSettings w = tunableWall("lower", 0.0, 1, slip(0.0, 1.0, 1.0, sigma));
             System sys;
             sys.box.lo = Eigen::Vector3d(0, 0, -2);
             sys.box.hi = Eigen::Vector3d(5, 5, 8);
@@ -212,7 +212,7 @@ TEST(TunableSlipWall, WcaCollisionIsIntegrableWhenDtIsAFiftiethOfSigma) {
             sys.pairs = PairTable(1);
             sys.pairs.set(0, 0, {0.0, 0.0, 0.0, false});
             sys.forceParameters = {1.0, 2.0, 1.0, dt};
-            sys.walls.add(w);
+            sys.walls.addPlane(w);
             sys.particles.add(1, 0, 2.5, 2.5, w.tunableSlip.wcaRange() + phase / 50.0 * speed * dt, 0, 0, -speed);
             sys.initialise();
             sys.sortByCell();
@@ -301,15 +301,18 @@ TEST(TunableSlipWall, DictionaryEntriesAreRead) {
                              "  tunableSlip { gammaL 2; zc 1.5; epsilon 0.8; sigma 0.4; } }\n"
                              "  upper { type plane; point (0 0 3); normal (0 0 -1); } }\n";
     const DpdModel m = readDpdModel(Dictionary::parse(text, "constant/dpdProperties"));
-    const PlanarWall& w = m.walls[0];
+    ASSERT_EQ(m.walls.planes().size(), 2u);
+    const PlanarWallSettings& w = *m.walls.planes()[0];
     ASSERT_TRUE(w.hasTunableSlip);
+    EXPECT_TRUE(m.walls[0].actsWithForces()) << "a plane with tunableSlip is a tunable-slip wall";
     EXPECT_EQ(w.tunableSlip.gammaL, 2.0);
     EXPECT_EQ(w.tunableSlip.zc, 1.5);
     EXPECT_EQ(w.tunableSlip.epsilon, 0.8);
     EXPECT_EQ(w.tunableSlip.sigma, 0.4);
     EXPECT_EQ(w.rule, ReflectionRule::specular);  // the safety net's default behind a tunable-slip wall
-    EXPECT_FALSE(m.walls[1].hasTunableSlip);
-    EXPECT_EQ(m.walls[1].rule, ReflectionRule::bounceBack);
+    EXPECT_FALSE(m.walls.planes()[1]->hasTunableSlip);
+    EXPECT_FALSE(m.walls[1].actsWithForces());
+    EXPECT_EQ(m.walls.planes()[1]->rule, ReflectionRule::bounceBack);
     EXPECT_TRUE(m.walls.anyTunableSlip());
 }
 

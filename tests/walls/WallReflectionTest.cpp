@@ -1,4 +1,4 @@
-// Planar walls (walls/PlanarWall.*, WallSet.*): the reflection rules of docs/walls.md section 3.3 applied
+// Planar walls (walls/PlanarWall.*, WallList.*): the reflection rules of docs/walls.md section 3.3 applied
 // by a System during a step, the Maxwellian (diffuse) wall's velocity distribution, the reflection
 // counters; and the frozen lattices behind a wall (setup/FrozenLattice.*, section 3.1).
 #include "integrators/EulerIntegrator.hpp"
@@ -19,9 +19,9 @@ using namespace dpd;
 
 namespace {
 
-PlanarWall wall(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, ReflectionRule rule,
+PlanarWallSettings wall(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, ReflectionRule rule,
                 const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero()) {
-    PlanarWall w;
+    PlanarWallSettings w;
     w.name = "wall";
     w.point = point;
     w.normal = normal;
@@ -32,7 +32,7 @@ PlanarWall wall(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, Ref
 
 // A 10 x 10 x 10 box (10 x 10 in the x-z plane for dimension 2) with one mobile particle, no pair
 // forces to speak of (it is alone), dt = 0.01, and the given walls.
-System lonely(int dimension, const std::vector<PlanarWall>& walls, const Eigen::Vector3d& r,
+System lonely(int dimension, const std::vector<PlanarWallSettings>& walls, const Eigen::Vector3d& r,
               const Eigen::Vector3d& v, double kT = 1.0) {
     System sys;
     sys.box.dimension = dimension;
@@ -43,7 +43,7 @@ System lonely(int dimension, const std::vector<PlanarWall>& walls, const Eigen::
     sys.pairs.set(0, 0, {25.0, 4.5, 0.0, true});
     sys.forceParameters = {1.0, 2.0, kT, 0.01};
     sys.seed = 3;
-    for (const auto& w : walls) sys.walls.add(w);
+    for (const auto& w : walls) sys.walls.addPlane(w);
     sys.particles.add(42, 0, r.x(), r.y(), r.z(), v.x(), v.y(), v.z());
     sys.initialise();
     sys.sortByCell();
@@ -122,7 +122,7 @@ TEST(WallReflection, WallsAlongOtherAxesAnd2D) {
 
 TEST(WallReflection, CountersCountOnlyCrossings) {
     // Two walls; the particle crosses only the second. Then a particle that stays in the fluid.
-    const std::vector<PlanarWall> walls = {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::bounceBack),
+    const std::vector<PlanarWallSettings> walls = {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::bounceBack),
                                            wall({0, 0, 8}, {0, 0, -1}, ReflectionRule::bounceBack)};
     GrootWarrenIntegrator gw(0.65);
     System crossing = lonely(3, walls, {5, 5, 7.99}, {0, 0, 3});
@@ -146,12 +146,12 @@ TEST(WallReflection, CountersCountOnlyCrossings) {
 
 // A wall whose plane lies on a face of the periodic box: a particle crossing z = lo must be mirrored
 // back, not wrapped round to just below z = hi (the integrators reflect before wrapping). Such walls
-// are refused by buildSystem and blockFrozenWall all the same (WallSet::thinWall), because fluid would
+// are refused by buildSystem and blockFrozenWall all the same (WallList::thinWall), because fluid would
 // interact with fluid through them across the periodic boundary; this test holds the reflection
 // itself to docs/walls.md 3.3: at z = 0.02 moving at -4 the particle ends at -0.02, is mirrored to 0.02
 // and bounced back to v_z = +4.
 TEST(WallReflection, WallOnTheBoxFaceStillReflects) {
-    const std::vector<PlanarWall> walls = {wall({0, 0, 0}, {0, 0, 1}, ReflectionRule::bounceBack),
+    const std::vector<PlanarWallSettings> walls = {wall({0, 0, 0}, {0, 0, 1}, ReflectionRule::bounceBack),
                                            wall({0, 0, 10}, {0, 0, -1}, ReflectionRule::bounceBack)};
     GrootWarrenIntegrator gw(0.65);
     System down = lonely(3, walls, {5, 5, 0.02}, {0, 0, -4});
@@ -199,7 +199,7 @@ TEST(WallReflection, MaxwellianDistributionIsFluxWeightedAtTheWallTemperature) {
     sys.pairs.set(0, 0, {0.0, 0.0, 0.0, false});  // ideal gas: only the wall acts
     sys.forceParameters = {1.0, 2.0, kT, 0.01};
     sys.seed = 99;
-    sys.walls.add(wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::maxwellian, uw));
+    sys.walls.addPlane(wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::maxwellian, uw));
     const PairRandom placement(5);
     const int m = 40000;
     for (int k = 0; k < m; ++k) {
@@ -283,7 +283,7 @@ TEST(FrozenLattice, FccNumberDensityBehindTheWall) {
         // Commensurate box 6 x 5: 2 planes (0.25, 0.75) x 2 x 6 x 5 = 120 points in 6 x 5 x 1: exactly
         // 4 per unit area per unit depth.
         const Box box = box3(6.0, 5.0, 12.0);
-        const PlanarWall w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+        const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
         const auto pts = frozenLattice(box, w, s);
         EXPECT_EQ(pts.size(), 120u);
         EXPECT_DOUBLE_EQ(pts.size() / (6.0 * 5.0 * s.thickness), 4.0);
@@ -308,7 +308,7 @@ TEST(FrozenLattice, FccNumberDensityBehindTheWall) {
         // density by 1/1.05, and 1.3 holds 1.5 plane spacings' worth of planes.
         const Box box = box3(6.3, 5.0, 12.0);
         s.thickness = 1.3;
-        const PlanarWall w = wall({0, 0, 9}, {0, 0, -1}, ReflectionRule::bounceBack);
+        const PlanarWallSettings w = wall({0, 0, 9}, {0, 0, -1}, ReflectionRule::bounceBack);
         const auto pts = frozenLattice(box, w, s);
         EXPECT_EQ(pts.size(), 180u);
         for (const auto& r : pts) {
@@ -328,7 +328,7 @@ TEST(FrozenLattice, FccNumberDensityBehindTheWall) {
         Box box = box3(10.0, 1.0, 10.0);
         box.dimension = 2;
         s.thickness = 1.0;
-        const PlanarWall w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+        const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
         const auto pts = frozenLattice(box, w, s);
         EXPECT_EQ(pts.size(), 3u * 14u);
         for (const auto& r : pts) {
@@ -347,7 +347,7 @@ TEST(FrozenLattice, LayersAtTheGivenDepthsAndSpacing) {
     s.layerDepths = {0.15, 0.35, 0.75};
     s.layerSpacing = {0.5, 1.0};
     const Box box = box3(6.0, 5.0, 12.0);
-    const PlanarWall w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+    const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
     const auto pts = frozenLattice(box, w, s);
     ASSERT_EQ(pts.size(), 180u);
     std::map<double, int> perDepth;
@@ -371,7 +371,7 @@ TEST(FrozenLattice, LayersAtTheGivenDepthsAndSpacing) {
     for (std::size_t k = 1; k < xv.size(); ++k) EXPECT_NEAR(xv[k] - xv[k - 1], 0.5, 1e-12);
     for (std::size_t k = 1; k < yv.size(); ++k) EXPECT_NEAR(yv[k] - yv[k - 1], 1.0, 1e-12);
     // An upper wall gets the same depths on the other side.
-    const PlanarWall up = wall({0, 0, 9}, {0, 0, -1}, ReflectionRule::bounceBack);
+    const PlanarWallSettings up = wall({0, 0, 9}, {0, 0, -1}, ReflectionRule::bounceBack);
     std::set<long> upDepths;
     for (const auto& r : frozenLattice(box, up, s)) upDepths.insert(std::lround((r.z() - 9.0) * 100));
     EXPECT_EQ(upDepths, (std::set<long>{15, 35, 75}));
@@ -385,7 +385,7 @@ TEST(FrozenLattice, RejectsImpossibleSettings) {
     s.layerSpacing = {0.5};  // a 3-D wall needs two spacings
     EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack), s), std::invalid_argument);
     s.lattice = "fcc";
-    PlanarWall oblique = wall({0, 0, 3}, Eigen::Vector3d(1, 0, 1).normalized(), ReflectionRule::bounceBack);
+    PlanarWallSettings oblique = wall({0, 0, 3}, Eigen::Vector3d(1, 0, 1).normalized(), ReflectionRule::bounceBack);
     EXPECT_THROW(frozenLattice(box, oblique, s), std::invalid_argument);
     s.lattice = "hexagonal";
     EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack), s), std::invalid_argument);

@@ -17,9 +17,9 @@ using namespace dpd;
 
 namespace {
 
-PlanarWall makeWall(const std::string& name, double z, double normalZ, ReflectionRule rule,
+PlanarWallSettings makeWall(const std::string& name, double z, double normalZ, ReflectionRule rule,
                     const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero(), double layer = 0.0) {
-    PlanarWall w;
+    PlanarWallSettings w;
     w.name = name;
     w.point = Eigen::Vector3d(0, 0, z);
     w.normal = Eigen::Vector3d(0, 0, normalZ);
@@ -30,7 +30,7 @@ PlanarWall makeWall(const std::string& name, double z, double normalZ, Reflectio
 }
 
 // One mobile particle in a 10^3 box, alone (no pair forces), with an optional uniform body force.
-System lonely(const PlanarWall& w, const Eigen::Vector3d& r, const Eigen::Vector3d& v, double dt,
+System lonely(const PlanarWallSettings& w, const Eigen::Vector3d& r, const Eigen::Vector3d& v, double dt,
               const Eigen::Vector3d& g = Eigen::Vector3d::Zero()) {
     System sys;
     sys.box.hi = Eigen::Vector3d(10, 10, 10);
@@ -43,7 +43,7 @@ System lonely(const PlanarWall& w, const Eigen::Vector3d& r, const Eigen::Vector
         sys.bodyForce.type = BodyForce::Type::uniform;
         sys.bodyForce.g = g;
     }
-    sys.walls.add(w);
+    sys.walls.addPlane(w);
     sys.particles.add(7, 0, r.x(), r.y(), r.z(), v.x(), v.y(), v.z());
     sys.initialise();
     sys.sortByCell();
@@ -87,7 +87,7 @@ TEST(WallRules, BounceForwardReversesTheVelocityAfterTheStep) {
 // Bounce layer 0.1 thick in front of z = 2 (wall at rest), dt = 0.001 so a particle moves 0.002 at most.
 TEST(WallRules, BounceLayerTurnsApproachingParticlesRound) {
     GrootWarrenIntegrator gw(0.65);
-    const PlanarWall w = makeWall("w", 2, 1, ReflectionRule::bounceLayer, Eigen::Vector3d::Zero(), 0.1);
+    const PlanarWallSettings w = makeWall("w", 2, 1, ReflectionRule::bounceLayer, Eigen::Vector3d::Zero(), 0.1);
     // In the layer, approaching: tangential velocity reversed, normal drawn from the wall (> 0), no mirror.
     System in = lonely(w, {5, 5, 2.03}, {1, 0.5, -2}, 0.001);
     WallCounters c = gw.step(in);
@@ -107,7 +107,7 @@ TEST(WallRules, BounceLayerTurnsApproachingParticlesRound) {
     expectNear(vel(outside), {1, 0.5, -2}, "outside");
     // A layer far too thin (1e-4) for a step of 0.1: the particle crosses the plane, is mirrored back,
     // turned round, and the crossing is counted.
-    const PlanarWall thin = makeWall("w", 2, 1, ReflectionRule::bounceLayer, Eigen::Vector3d::Zero(), 1e-4);
+    const PlanarWallSettings thin = makeWall("w", 2, 1, ReflectionRule::bounceLayer, Eigen::Vector3d::Zero(), 1e-4);
     System through = lonely(thin, {5, 5, 2.05}, {0, 0, -10}, 0.01);
     c = gw.step(through);
     EXPECT_NEAR(pos(through).z(), 2.05, kTol);
@@ -131,8 +131,8 @@ System gas(ReflectionRule rule, double layer, double kTGas, double kTWall, doubl
     sys.pairs.set(0, 0, {0.0, 0.0, 0.0, false});
     sys.forceParameters = {1.0, 2.0, kTWall, dt};
     sys.seed = 5;
-    sys.walls.add(makeWall("lower", 1, 1, rule, Eigen::Vector3d::Zero(), layer));
-    sys.walls.add(makeWall("upper", 5, -1, rule, Eigen::Vector3d::Zero(), layer));
+    sys.walls.addPlane(makeWall("lower", 1, 1, rule, Eigen::Vector3d::Zero(), layer));
+    sys.walls.addPlane(makeWall("upper", 5, -1, rule, Eigen::Vector3d::Zero(), layer));
     const PairRandom random(17);
     fillRandom(sys.particles, sys.box, Eigen::Vector3d(0, 0, 1.2), Eigen::Vector3d(4, 4, 4.8),
                kGasParticles / (4.0 * 4.0 * 3.6), 0, [](double, double, double) { return true; }, random, 0);
@@ -227,8 +227,8 @@ System couette(ReflectionRule rule, double U) {
     sys.pairs.set(0, 0, {25.0, 4.5, 0.0, true});
     sys.forceParameters = {1.0, 2.0, 1.0, 0.02};
     sys.seed = 23;
-    sys.walls.add(makeWall("lower", 1, 1, rule, Eigen::Vector3d(-U, 0, 0)));
-    sys.walls.add(makeWall("upper", 7, -1, rule, Eigen::Vector3d(U, 0, 0)));
+    sys.walls.addPlane(makeWall("lower", 1, 1, rule, Eigen::Vector3d(-U, 0, 0)));
+    sys.walls.addPlane(makeWall("upper", 7, -1, rule, Eigen::Vector3d(U, 0, 0)));
     const PairRandom random(29);
     fillRandom(sys.particles, sys.box, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(5, 5, 7), 3.0, 0,
                [](double, double, double) { return true; }, random, 0);
@@ -290,8 +290,8 @@ TEST(WallRules, MovingWallsCarryTheirFrozenParticlesAndWrap) {
     sys.pairs.set(0, 1, {25.0, 4.5, 0.0, true});
     sys.forceParameters = {1.0, 2.0, 1.0, 0.02};
     const Eigen::Vector3d uLow(-3, 0, 0), uHigh(3, 0.5, 0);
-    sys.walls.add(makeWall("lower", 1.5, 1, ReflectionRule::bounceForward, uLow));
-    sys.walls.add(makeWall("upper", 6.5, -1, ReflectionRule::bounceForward, uHigh));
+    sys.walls.addPlane(makeWall("lower", 1.5, 1, ReflectionRule::bounceForward, uLow));
+    sys.walls.addPlane(makeWall("upper", 6.5, -1, ReflectionRule::bounceForward, uHigh));
     const PairRandom random(3);
     fillRandom(sys.particles, sys.box, Eigen::Vector3d(0, 0, 1.5), Eigen::Vector3d(4, 4, 6.5), 3.0, 0,
                [](double, double, double) { return true; }, random, 0);
@@ -300,8 +300,8 @@ TEST(WallRules, MovingWallsCarryTheirFrozenParticlesAndWrap) {
     lattice.density = 3.0;
     std::uint64_t id = 100000;
     std::map<std::uint64_t, Eigen::Vector3d> start;
-    for (const PlanarWall& w : sys.walls.walls())
-        for (const Eigen::Vector3d& r : frozenLattice(sys.box, w, lattice)) {
+    for (const PlanarWallSettings* w : sys.walls.planes())
+        for (const Eigen::Vector3d& r : frozenLattice(sys.box, *w, lattice)) {
             sys.particles.add(id, 1, r.x(), r.y(), r.z());  // at rest: the system gives them the wall's velocity
             start[id++] = r;
         }

@@ -1,0 +1,67 @@
+// A planar wall read from its sub-dictionary of constant/dpdProperties' walls block.
+#include "io/Dictionary.hpp"
+#include "walls/PlanarWall.hpp"
+#include "walls/TunableSlipWall.hpp"
+#include "walls/WallTypes.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace dpd {
+
+namespace {
+
+// tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed.
+TunableSlipParameters readTunableSlip(const Dictionary& td) {
+    td.checkKeys({"gammaL", "zc", "epsilon", "sigma"});
+    TunableSlipParameters t;
+    t.gammaL = td.getNonNegative<double>("gammaL");
+    t.zc = td.getPositive<double>("zc");
+    t.epsilon = td.getPositive<double>("epsilon");
+    t.sigma = td.getPositive<double>("sigma");
+    return t;
+}
+
+PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadContext& c) {
+    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha", "tunableSlip"});
+    PlanarWallSettings w;
+    w.name = c.name;
+    w.point = wd.get<Eigen::Vector3d>("point");
+    w.normal = wd.get<Eigen::Vector3d>("normal");
+    if (w.normal.norm() == 0.0) wd.fail("normal", "must not be zero");
+    w.normal.normalize();
+    if (c.dimension == 2 && w.normal.y() != 0.0) wd.fail("normal", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    w.velocity = wd.getOrDefault<Eigen::Vector3d>("velocity", Eigen::Vector3d::Zero());
+    if (std::abs(w.velocity.dot(w.normal)) > 1e-12) wd.fail("velocity", "a wall can only slide in its own plane");
+    if (c.dimension == 2 && w.velocity.y() != 0.0) wd.fail("velocity", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    if (wd.found("tunableSlip")) {
+        if (!wd.isDict("tunableSlip")) wd.fail("tunableSlip", "expected { gammaL ...; zc ...; epsilon ...; sigma ...; }");
+        w.hasTunableSlip = true;
+        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"));
+    }
+    // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
+    // since it adds no tangential friction of its own to the slip that gammaL sets.
+    const std::string defaultRule = w.hasTunableSlip ? "specular" : "bounceBack";
+    try {
+        w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", defaultRule));
+    } catch (const std::invalid_argument& e) {
+        wd.fail("reflection", e.what());
+    }
+    // The bounce layer's thickness in cutoffs (docs/walls.md 3.2 step 5: about 0.06-0.1 works).
+    if (w.rule == ReflectionRule::bounceLayer) w.layer = wd.getPositive<double>("alpha") * c.cutoff;
+    else if (wd.found("alpha")) wd.fail("alpha", "only a wall with reflection bounceLayer has a layer thickness alpha");
+    return w;
+}
+
+}  // namespace
+
+std::unique_ptr<Wall> makePlanarWall(PlanarWallSettings settings, std::size_t index) {
+    if (settings.hasTunableSlip) return std::make_unique<TunableSlipWall>(std::move(settings), index);
+    return std::make_unique<PlanarWall>(std::move(settings));
+}
+
+std::unique_ptr<Wall> PlanarWall::New(const Dictionary& dict, const WallReadContext& context) {
+    return makePlanarWall(readPlanarWallSettings(dict, context), context.index);
+}
+
+}  // namespace dpd

@@ -1,0 +1,37 @@
+#pragma once
+// What a planar wall is (the `plane` type of constant/dpdProperties' walls): the plane, the normal
+// into the fluid, its velocity, its reflection rule and, for a tunable-slip wall, its parameters.
+// Post-processing reads channels from it; walls/PlanarWall.hpp is what acts on the fluid.
+//
+// A moving wall slides in its own plane (its velocity has no normal component), so the plane maps
+// onto itself and only the wall's frozen particles move: they carry the wall's velocity
+// (WallList::assignFrozenVelocities) and drift with it like any particle.
+#include "walls/ReflectionRule.hpp"
+#include "walls/TunableSlipParameters.hpp"
+
+#include <Eigen/Core>
+#include <string>
+
+namespace dpd {
+
+struct PlanarWallSettings {
+    std::string name;
+    Eigen::Vector3d point{0, 0, 0};
+    Eigen::Vector3d normal{0, 0, 1};  // unit vector into the fluid
+    Eigen::Vector3d velocity{0, 0, 0};
+    ReflectionRule rule = ReflectionRule::bounceBack;
+    double layer = 0.0;  // bounceLayer: thickness of the layer in front of the plane (alpha x cutoff)
+    // A smooth tunable-slip wall (Smiatek et al. 2008) acting on the fluid in front of the plane, in
+    // place of frozen particles; the reflection rule stays as a safety net behind its WCA repulsion.
+    bool hasTunableSlip = false;
+    TunableSlipParameters tunableSlip;
+
+    // Positive on the fluid side, negative inside the solid.
+    double signedDistance(double x, double y, double z) const {
+        return (x - point.x()) * normal.x() + (y - point.y()) * normal.y() + (z - point.z()) * normal.z();
+    }
+    // The axis the normal lies along, or -1 if the wall is oblique.
+    int normalAxis() const;
+};
+
+}  // namespace dpd
