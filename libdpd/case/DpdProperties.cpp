@@ -105,27 +105,6 @@ IntegratorSettings readIntegrator(const Dictionary& d) {
     return d.found("integrator") ? IntegratorSettings::read(d.subDict("integrator")) : IntegratorSettings{};
 }
 
-BodyForce readBodyForce(const Dictionary& d, int dimension) {
-    BodyForce f;
-    if (!d.found("bodyForce")) return f;
-    const Dictionary& bd = d.subDict("bodyForce");
-    bd.checkKeys({"type", "value", "gradientAxis"});
-    const std::string type = bd.get<std::string>("type");
-    try {
-        f.type = bodyForceTypeFromName(type);
-    } catch (const std::invalid_argument& e) {
-        bd.fail("type", e.what());
-    }
-    if (f.type == BodyForce::Type::none) return f;
-    f.g = bd.get<Eigen::Vector3d>("value");
-    if (dimension == 2 && f.g.y() != 0.0) bd.fail("value", "a 2-D scene lies in the x-z plane: the y component must be 0");
-    if (f.type == BodyForce::Type::reversePoiseuille) {
-        f.gradientAxis = bd.getAxis("gradientAxis");
-        if (f.g[f.gradientAxis] != 0.0) bd.fail("value", "must be perpendicular to gradientAxis");
-    }
-    return f;
-}
-
 // Each wall names its type (walls/WallTypes.hpp), which reads the rest of its sub-dictionary.
 WallList readWalls(const Dictionary& d, int dimension, double cutoff) {
     WallList walls;
@@ -194,7 +173,7 @@ DpdModel readDpdModel(const Dictionary& d) {
     m.species = readSpecies(d);
     m.pairs = readPairs(d, m.species, m.pairNotes);
     m.integrator = readIntegrator(d);
-    m.bodyForce = readBodyForce(d, m.dimension);
+    m.bodyForce = readBodyForce(d, m.dimension);  // forces/BodyForceTypes.cpp
     m.walls = readWalls(d, m.dimension, m.cutoff);
     makeIntegrator(m.integrator, m.walls);  // the type refuses walls it cannot run
     m.geometryWall = readGeometryWall(d, m.cutoff);

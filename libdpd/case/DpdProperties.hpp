@@ -68,7 +68,7 @@ struct DpdModel {
     SpeciesTable species;
     PairTable pairs;
     IntegratorSettings integrator;
-    BodyForce bodyForce;
+    std::shared_ptr<const BodyForce> bodyForce = noBodyForce();
     WallList walls;  // the walls block's walls (planar)
     GeometryWallSettings geometryWall;
     StabilitySettings stability;

@@ -116,7 +116,7 @@ int readMeshDimension(const Dictionary& dict, const Dictionary& dpdProperties, c
                       const FoamCaseSpec& s) {
     std::string yVaries;
     if (s.wallAxis == 1) yVaries = "the walls are normal to y";
-    else if (model.bodyForce.g.y() != 0.0) yVaries = "the body force has a y component";
+    else if (model.bodyForce->value().y() != 0.0) yVaries = "the body force has a y component";
     else if (dpdProperties.found("geometry") && model.dimension == 3 &&
              dpdProperties.subDict("geometry").getOrDefault<std::string>("extrudeAxis", "y") != "y")
         yVaries = "the geometry is not extruded along y";
@@ -235,10 +235,10 @@ FoamCaseSpec makeFoamCaseSpec(const Dictionary& dict, const Dictionary& dpdPrope
     s.foamCase = dict.getOrDefault<std::string>("foamCase", "simpleFoam");
     if (s.foamCase.empty()) dict.fail("foamCase", "must name a directory");
 
-    const BodyForce& f = model.bodyForce;
-    if (f.type == BodyForce::Type::reversePoiseuille)
-        dpdProperties.fail("bodyForce", "a reversePoiseuille force has no continuum twin here (use a uniform force)");
-    s.g = f.type == BodyForce::Type::uniform ? f.g : Eigen::Vector3d::Zero();
+    const BodyForce& f = *model.bodyForce;
+    if (!f.uniform())
+        dpdProperties.fail("bodyForce", "a " + f.typeName() + " force has no continuum twin here (use a uniform force)");
+    s.g = f.value();
 
     readWalls(dpdProperties, model, s);
     s.dpdBox = readMeshBox(dict, in, model.dimension);

@@ -1,50 +1,28 @@
 #include "forces/BodyForce.hpp"
 
-#include "core/MobileSpecies.hpp"
-
-#include <stdexcept>
+#include "forces/NoBodyForce.hpp"
+#include "io/Dictionary.hpp"
 
 namespace dpd {
 
-BodyForce::Type bodyForceTypeFromName(const std::string& name) {
-    if (name == "none") return BodyForce::Type::none;
-    if (name == "uniform") return BodyForce::Type::uniform;
-    if (name == "reversePoiseuille") return BodyForce::Type::reversePoiseuille;
-    throw std::invalid_argument("unknown body force type '" + name + "' (expected none, uniform or reversePoiseuille)");
+std::shared_ptr<const BodyForce> noBodyForce() {
+    static const std::shared_ptr<const BodyForce> none = std::make_shared<NoBodyForce>();
+    return none;
 }
 
-Eigen::Vector3d BodyForce::at(double coordinate, const Box& box) const {
-    if (type == Type::none) return Eigen::Vector3d::Zero();
-    if (type == Type::uniform) return g;
-    const double mid = 0.5 * (box.lo[gradientAxis] + box.hi[gradientAxis]);
-    return coordinate < mid ? g : Eigen::Vector3d(-g);
+Eigen::Vector3d readBodyForceValue(const Dictionary& d, int dimension) {
+    const Eigen::Vector3d g = d.get<Eigen::Vector3d>("value");
+    if (dimension == 2 && g.y() != 0.0) d.fail("value", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    return g;
 }
 
-void BodyForce::apply(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies, const Box& box) const {
-    if (!active()) return;
-    const long n = static_cast<long>(p.size());
-    const double mid = 0.5 * (box.lo[gradientAxis] + box.hi[gradientAxis]);
-    const double* coordinate = p.position(gradientAxis).data();
-    const bool reverse = type == Type::reversePoiseuille;
-    const std::uint8_t* species = p.species.data();
-    double *fx = p.fx.data(), *fy = p.fy.data(), *fz = p.fz.data();
-    const double gx = g.x(), gy = g.y(), gz = g.z();
-    // g scaled by the particle's mobile factor (0: a frozen particle's f + 0 is its f), and by -1 in the
-    // upper half of a reverse-Poiseuille box.
-    const auto add = [=](long i, double mobile) {
-        const double s = (reverse && coordinate[i] >= mid) ? -mobile : mobile;
-        fx[i] += s * gx;
-        fy[i] += s * gy;
-        fz[i] += s * gz;
-    };
-    if (const std::optional<std::uint32_t> bits = mobileSpeciesBits(frozenOfSpecies)) {
-        const std::uint32_t mobileBits = *bits;
-#pragma omp parallel for simd schedule(static)
-        for (long i = 0; i < n; ++i) add(i, mobileFactor(mobileBits, species[i]));
-    } else {
-#pragma omp parallel for schedule(static)
-        for (long i = 0; i < n; ++i) add(i, frozenOfSpecies[species[i]] ? 0.0 : 1.0);
-    }
+std::shared_ptr<const BodyForce> readBodyForce(const Dictionary& d, int dimension) {
+    if (!d.found("bodyForce")) return noBodyForce();
+    const Dictionary& bd = d.subDict("bodyForce");
+    const std::string type = bd.get<std::string>("type");
+    if (!bodyForceRegistry().has(type))
+        bd.fail("type", "unknown body force type '" + type + "' (expected " + bodyForceRegistry().nameList() + ")");
+    return bodyForceRegistry().make(type, bd, dimension);
 }
 
 }  // namespace dpd

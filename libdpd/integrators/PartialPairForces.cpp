@@ -21,7 +21,7 @@ void computeConservativeForces(System& sys) {
             const DpdPairTerms<kConservativeTerm, decltype(weight)> conservative(weight, params);
             accumulatePairForces(sys.particles, contextOf(sys), conservative, params.cutoff);
         });
-    sys.bodyForce.apply(sys.particles, sys.frozenOfSpecies(), sys.box);
+    sys.bodyForce->apply(sys.particles, sys.frozenOfSpecies(), sys.box);
 }
 
 void addDissipativeForces(System& sys) {

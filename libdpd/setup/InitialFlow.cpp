@@ -1,6 +1,7 @@
 #include "setup/InitialFlow.hpp"
 
 #include "analysis/PoiseuilleFit.hpp"
+#include "forces/ReversePoiseuilleBodyForce.hpp"
 #include "io/Dictionary.hpp"
 #include "case/DpdProperties.hpp"
 
@@ -23,11 +24,11 @@ namespace {
 
 // The uniform body force a Poiseuille start between walls normal to `axis` needs.
 void channelBodyForce(const Dictionary& d, const DpdModel& model, int axis, InitialFlow& flow) {
-    if (model.bodyForce.type != BodyForce::Type::uniform || !model.bodyForce.active())
-        d.fail("type", "a poiseuille start needs a uniform body force in constant/dpdProperties");
-    if (model.bodyForce.g[axis] != 0.0)
+    const BodyForce& f = *model.bodyForce;
+    if (!f.uniform() || !f.active()) d.fail("type", "a poiseuille start needs a uniform body force in constant/dpdProperties");
+    if (f.value()[axis] != 0.0)
         d.fail("type", "the body force has a component along the walls' normal: no steady channel flow");
-    flow.g = model.bodyForce.g;
+    flow.g = f.value();
 }
 
 // The channel of a Poiseuille start between the walls of a geometry block: axis and wallPositions.
@@ -69,12 +70,13 @@ void channelFromModel(const Dictionary& d, const DpdModel& model, InitialFlow& f
 // The periodic box of a reverse-Poiseuille start.
 void periodicBoxFromModel(const Dictionary& d, const DpdModel& model, const Box& box, InitialFlow& flow) {
     if (!model.walls.empty()) d.fail("type", "a reversePoiseuille start needs a box without walls");
-    if (model.bodyForce.type != BodyForce::Type::reversePoiseuille || !model.bodyForce.active())
+    const BodyForce& f = *model.bodyForce;
+    if (!dynamic_cast<const ReversePoiseuilleBodyForce*>(&f) || !f.active())
         d.fail("type", "a reversePoiseuille start needs a reversePoiseuille body force in constant/dpdProperties");
-    flow.axis = model.bodyForce.gradientAxis;
+    flow.axis = f.gradientAxis();
     flow.lower = box.lo[flow.axis];
     flow.upper = box.hi[flow.axis];
-    flow.g = model.bodyForce.g;
+    flow.g = f.value();
 }
 
 }  // namespace

@@ -41,9 +41,8 @@ std::vector<int> drivingAxes(const Dictionary& d, const DpdModel& model) {
         return {axis};
     }
     std::vector<int> axes;
-    if (model.bodyForce.active())
-        for (int a = 0; a < 3; ++a)
-            if (model.bodyForce.g[a] != 0.0) axes.push_back(a);
+    for (int a = 0; a < 3; ++a)
+        if (model.bodyForce->value()[a] != 0.0) axes.push_back(a);
     return axes;
 }
 
@@ -71,7 +70,7 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     const double time = ed.getNonNegative<double>("time");
     const double dt = ed.getPositive<double>("deltaT");
     DpdModel fluidOnly = model;
-    fluidOnly.bodyForce = BodyForce{};
+    fluidOnly.bodyForce = noBodyForce();
     fluidOnly.walls = WallList{};
     fluidOnly.geometryWall = GeometryWallSettings{};  // the box is filled through the solid too
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict");

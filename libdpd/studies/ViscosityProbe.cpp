@@ -1,6 +1,7 @@
 #include "studies/ViscosityProbe.hpp"
 
 #include "analysis/PoiseuilleFit.hpp"
+#include "forces/ReversePoiseuilleBodyForce.hpp"
 #include "setup/InitialFlow.hpp"
 #include "system/System.hpp"
 #include "sampling/BinAccumulator.hpp"
@@ -17,15 +18,13 @@ constexpr int kGradientAxis = 2;  // z; the flow is along x
 
 // The force and the laminar start of the flow on the fluid.
 void startReversePoiseuille(System& sys, const ViscosityProbeSettings& s) {
-    sys.bodyForce.type = BodyForce::Type::reversePoiseuille;
-    sys.bodyForce.g = Eigen::Vector3d(s.g, 0.0, 0.0);
-    sys.bodyForce.gradientAxis = kGradientAxis;
+    sys.bodyForce = std::make_shared<ReversePoiseuilleBodyForce>(Eigen::Vector3d(s.g, 0.0, 0.0), kGradientAxis);
     InitialFlow flow;
     flow.type = InitialFlow::Type::reversePoiseuille;
     flow.axis = kGradientAxis;
     flow.lower = sys.box.lo[kGradientAxis];
     flow.upper = sys.box.hi[kGradientAxis];
-    flow.g = sys.bodyForce.g;
+    flow.g = sys.bodyForce->value();
     const double density = static_cast<double>(sys.particles.size()) / sys.box.volume();
     flow.nu = s.startNu > 0.0 ? s.startNu
                               : kineticTheoryViscosity(sys.forceParameters.kT, sys.pairs(0, 0).gamma, density,

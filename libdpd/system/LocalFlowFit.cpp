@@ -17,7 +17,7 @@ FlowAxes FlowAxes::along(int axis) {
 FlowAxes flowAxesOf(const System& sys) {
     FlowAxes a;
     for (std::size_t w = 0; w < sys.walls.size(); ++w) sys.walls[w].markFlowAxes(sys.box, a.varies);
-    if (sys.bodyForce.type == BodyForce::Type::reversePoiseuille) a.varies[sys.bodyForce.gradientAxis] = true;
+    if (!sys.bodyForce->uniform()) a.varies[sys.bodyForce->gradientAxis()] = true;
     return a;
 }
 

@@ -105,7 +105,7 @@ void System::computeForces(double predictorShift) {
                               {predictorShift, &frozenOfSpecies_, forceOrder}, true};
     pairKernel_(particles, ctx, forceParameters);
     forcesLeftBySort_ = false;  // written over by the pair forces
-    bodyForce.apply(particles, frozenOfSpecies_, box);
+    bodyForce->apply(particles, frozenOfSpecies_, box);
     if (wallForces_) {
         WallStep s = wallStep();
         walls.addForces(s);

@@ -34,7 +34,7 @@ public:
     PairTable pairs;
     PairForceParameters forceParameters;  // cutoff, weight exponent, kT, dt
     std::uint64_t seed = 1;
-    BodyForce bodyForce;
+    std::shared_ptr<const BodyForce> bodyForce = noBodyForce();
     WallList walls;  // in the order they act: the planar walls, then a wall of any shape (geometry)
     std::int64_t step = 0;
     double time = 0.0;

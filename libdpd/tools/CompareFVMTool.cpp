@@ -51,7 +51,7 @@ void checkRecord(const Setup& s, const std::string& caseDir) {
     const Dictionary& r = s.record;
     const Dictionary props = Dictionary::readFile((fs::path(caseDir) / "constant" / "dpdProperties").string());
     const DpdModel model = readDpdModel(props);
-    const Eigen::Vector3d g = model.bodyForce.type == BodyForce::Type::uniform ? model.bodyForce.g : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d g = model.bodyForce->uniform() ? model.bodyForce->value() : Eigen::Vector3d::Zero();
     if (!sameVector(r.get<Eigen::Vector3d>("g"), g, g.norm()))
         r.fail("g", "differs from the body force of " + props.fileName() + ": rerun makeFoamCase");
     const std::string wallAxis = r.get<std::string>("wallAxis");

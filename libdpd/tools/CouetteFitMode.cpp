@@ -40,7 +40,7 @@ std::string CouetteFitMode::name() const { return "couette"; }
 
 void CouetteFitMode::read(FitSlipLengthSetup& s) const {
     const Dictionary& d = s.dict;
-    if (s.model.bodyForce.active())
+    if (s.model.bodyForce->active())
         s.dpdProperties.fail("bodyForce", "mode couette (" + d.fileName() + ") fits a line: it needs no body force");
     s.component = couetteComponent(s);
     if (d.found("fitRange")) {

@@ -55,7 +55,7 @@ ChannelBounds channelBounds(const FitSlipLengthSetup& s, const ProfileTableData&
 
 int bodyForceComponent(const FitSlipLengthSetup& s) {
     const Dictionary& d = s.dict;
-    const Eigen::Vector3d& g = s.model.bodyForce.g;
+    const Eigen::Vector3d g = s.model.bodyForce->value();
     const std::string dpdFile = s.dpdProperties.fileName();
     int component = -1;
     if (d.found("component")) {

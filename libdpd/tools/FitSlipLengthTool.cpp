@@ -139,7 +139,7 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     if (r.axis == r.component)
         d.fail(d.found("component") ? "component" : "", std::string("the flow component ") + axisLetter(r.component) +
                                                             " is the axis of the profile " + t.file);
-    r.g = s.model.bodyForce.g[s.component];
+    r.g = s.model.bodyForce->value()[s.component];
 
     const Points pts = usablePoints(t, s.component);
     r.pointsUsed = static_cast<int>(pts.profile.y.size());

@@ -1,5 +1,7 @@
 #include "tools/PoiseuilleFitMode.hpp"
 
+#include "forces/ReversePoiseuilleBodyForce.hpp"
+
 #include "tools/FitModeParts.hpp"
 #include "tools/FitSlipLengthTool.hpp"
 
@@ -9,11 +11,11 @@ std::string PoiseuilleFitMode::name() const { return "poiseuille"; }
 
 void PoiseuilleFitMode::read(FitSlipLengthSetup& s) const {
     const Dictionary& d = s.dict;
-    const BodyForce& f = s.model.bodyForce;
+    const BodyForce& f = *s.model.bodyForce;
     if (d.found("fitRange")) d.fail("fitRange", "only mode couette takes a fitRange (use exclude)");
-    if (f.type == BodyForce::Type::reversePoiseuille)
+    if (dynamic_cast<const ReversePoiseuilleBodyForce*>(&f))
         d.fail("mode", s.dpdProperties.fileName() + " has a reversePoiseuille body force: use mode reversePoiseuille");
-    if (f.type != BodyForce::Type::uniform || !f.active())
+    if (!f.uniform() || !f.active())
         s.dpdProperties.fail("bodyForce", "mode poiseuille (" + d.fileName() + ") needs a uniform nonzero body force");
     s.component = bodyForceComponent(s);
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : 0.0;

@@ -1,6 +1,7 @@
 #include "tools/ReversePoiseuilleFitMode.hpp"
 
 #include "core/Axis.hpp"
+#include "forces/ReversePoiseuilleBodyForce.hpp"
 #include "tools/FitModeParts.hpp"
 #include "tools/FitSlipLengthTool.hpp"
 
@@ -10,9 +11,9 @@ std::string ReversePoiseuilleFitMode::name() const { return "reversePoiseuille";
 
 void ReversePoiseuilleFitMode::read(FitSlipLengthSetup& s) const {
     const Dictionary& d = s.dict;
-    const BodyForce& f = s.model.bodyForce;
+    const BodyForce& f = *s.model.bodyForce;
     if (d.found("fitRange")) d.fail("fitRange", "only mode couette takes a fitRange (use exclude)");
-    if (f.type != BodyForce::Type::reversePoiseuille || !f.active())
+    if (!dynamic_cast<const ReversePoiseuilleBodyForce*>(&f) || !f.active())
         d.fail("mode", "mode reversePoiseuille needs a nonzero body force of type reversePoiseuille in " +
                            s.dpdProperties.fileName());
     if (s.hasWallPositions) d.fail("wallPositions", "mode reversePoiseuille has no walls");
@@ -22,7 +23,7 @@ void ReversePoiseuilleFitMode::read(FitSlipLengthSetup& s) const {
 
 void ReversePoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
                                    FitSlipLengthResult& r) const {
-    const int gradientAxis = s.model.bodyForce.gradientAxis;
+    const int gradientAxis = s.model.bodyForce->gradientAxis();
     if (r.axis != gradientAxis)
         s.dpdProperties.fail("bodyForce", "the reversePoiseuille gradientAxis is " + std::string(axisLetter(gradientAxis)) +
                                               " but the profile " + t.file + " is binned along " + t.axisName());

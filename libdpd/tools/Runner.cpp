@@ -95,7 +95,7 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
         << "Walls          : " << sys.walls.size() << "\n";
     printWalls(log, sys);
     for (const std::string& note : pairNotes) log << "Pair mixed     : " << note << "\n";
-    log << "Body force     : " << (sys.bodyForce.active() ? vectorText(sys.bodyForce.g) : std::string("none")) << "\n"
+    log << "Body force     : " << (sys.bodyForce->active() ? vectorText(sys.bodyForce->value()) : std::string("none")) << "\n"
         << "Sampling       : " << nFunctions << " function object(s)\n\n";
 }
 

@@ -12,6 +12,7 @@
 // times gamma w_D <= gamma, summed over at most ~40 pairs per particle: 400 u gamma |v|max (~1e-4
 // here). Forces with the half-step velocities instead would differ by
 // gamma w_D e.(dt f / 2) ~ 4.5 x 0.25 x 0.02 x 20 ~ 0.5.
+#include "forces/UniformBodyForce.hpp"
 #include "integrators/Integrator.hpp"
 #include "integrators/PartialPairForces.hpp"
 #include "setup/StandardFluid.hpp"
@@ -59,8 +60,7 @@ std::unique_ptr<Integrator> scheme(const std::string& type) {
 
 TEST(IntegratorForces, DpdVvLeavesTheFullForcesOfTheFinalVelocities) {
     System sys = makeStandardFluid(fluid());
-    sys.bodyForce.type = BodyForce::Type::uniform;
-    sys.bodyForce.g = Eigen::Vector3d(0.3, 0, 0);
+    sys.bodyForce = std::make_shared<UniformBodyForce>(Eigen::Vector3d(0.3, 0, 0));
     sys.computeForces();
     auto dpdvv = scheme("DPDVV");
     for (int k = 0; k < 20; ++k) dpdvv->step(sys);
@@ -77,8 +77,7 @@ TEST(IntegratorForces, DpdVvLeavesTheFullForcesOfTheFinalVelocities) {
 
 TEST(IntegratorForces, ShardlowLeavesTheConservativeAndBodyForces) {
     System sys = makeStandardFluid(fluid());
-    sys.bodyForce.type = BodyForce::Type::uniform;
-    sys.bodyForce.g = Eigen::Vector3d(0.0, 0.2, 0);
+    sys.bodyForce = std::make_shared<UniformBodyForce>(Eigen::Vector3d(0.0, 0.2, 0));
     auto shardlow = scheme("Shardlow");
     for (int k = 0; k < 20; ++k) shardlow->step(sys);
     EXPECT_EQ(largestForceDifference(sys, computeConservativeForces), 0.0) << "the same loop, the same bits";

@@ -2,6 +2,7 @@
 // segment, the binned virial against a direct sum over all pairs, the pressure of the equilibrium
 // fluid against the Groot-Warren equation of state, and the shear stress of periodic Poiseuille flow
 // against the exact momentum balance sigma_xz(z) = -rho g (z - z_c).
+#include "forces/ReversePoiseuilleBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
 #include "setup/StandardFluid.hpp"
@@ -184,9 +185,7 @@ TEST(StressProfile, PeriodicPoiseuilleShearStressBalancesTheBodyForce) {
     channel.pairs.set(0, 0, {25.0, 4.5, 0.0, true});
     channel.forceParameters = {1.0, 2.0, 1.0, 0.02};
     channel.seed = 37;
-    channel.bodyForce.type = BodyForce::Type::reversePoiseuille;
-    channel.bodyForce.g = Eigen::Vector3d(0.05, 0, 0);
-    channel.bodyForce.gradientAxis = 2;
+    channel.bodyForce = std::make_shared<ReversePoiseuilleBodyForce>(Eigen::Vector3d(0.05, 0, 0), 2);
     const PairRandom random(41);
     fillRandom(channel.particles, channel.box, channel.box.lo, channel.box.hi, 3.0, 0,
                [](double, double, double) { return true; }, random, 0);

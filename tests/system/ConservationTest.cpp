@@ -10,6 +10,7 @@
 // The bound 1e-9 N (1.5e-6) of the brief is well above that and far below what any non-conserving
 // force would do: a pair force that were not antisymmetric (for example zeta_ij != zeta_ji) would give
 // a random walk of size ~ sigma sqrt(3 / dt) sqrt(N_pairs) dt ~ 1 per step.
+#include "forces/UniformBodyForce.hpp"
 #include "integrators/EulerIntegrator.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
@@ -92,11 +93,10 @@ TEST(Conservation, UniformBodyForceAddsNgDtPerStep) {
     for (const std::string& type : integratorTypes()) {
         SCOPED_TRACE(type);
         System sys = makeStandardFluid(fluid1500());
-        sys.bodyForce.type = BodyForce::Type::uniform;
-        sys.bodyForce.g = Eigen::Vector3d(0.1, -0.05, 0.02);
+        sys.bodyForce = std::make_shared<UniformBodyForce>(Eigen::Vector3d(0.1, -0.05, 0.02));
         sys.computeForces();  // the forces of the current state now include g
         const double n = static_cast<double>(sys.particles.size());
-        const Eigen::Vector3d perStep = n * sys.dt() * sys.bodyForce.g;  // N g dt = (6, -3, 1.2)
+        const Eigen::Vector3d perStep = n * sys.dt() * sys.bodyForce->value();  // N g dt = (6, -3, 1.2)
         auto scheme = makeScheme(type);
         const Eigen::Vector3d p0 = totalMomentum(sys);
         Eigen::Vector3d previous = p0;

@@ -1,6 +1,7 @@
 // Trajectories are a function of the state and the seed alone: bit-identical on one thread and on two
 // (the slab-coloured pair loop fixes the summation order; the random numbers are keyed by seed, step
 // and ids), identical for the same seed, different for different seeds.
+#include "forces/UniformBodyForce.hpp"
 #include "integrators/EulerIntegrator.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
@@ -96,8 +97,7 @@ System channel(std::uint64_t seed, double fluidWallA = 25.0) {
     upper.rule = ReflectionRule::bounceBack;
     sys.walls.addPlane(lower);
     sys.walls.addPlane(upper);
-    sys.bodyForce.type = BodyForce::Type::uniform;
-    sys.bodyForce.g = Eigen::Vector3d(0.2, 0, 0);
+    sys.bodyForce = std::make_shared<UniformBodyForce>(Eigen::Vector3d(0.2, 0, 0));
     const PairRandom random(seed);
     fillRandom(sys.particles, sys.box, Eigen::Vector3d(0, 0, 1.0), Eigen::Vector3d(9.5, 5.2, 10.0), 3.0, 0,
                [](double, double, double) { return true; }, random, 0);

@@ -3,6 +3,7 @@
 // wall keeping a DPD fluid out (dt up to sigma / 50), thread independence, the predicted slip length, and the
 // errors of constant/dpdProperties.
 #include "core/Error.hpp"
+#include "forces/UniformBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "io/Dictionary.hpp"
 #include "case/DpdProperties.hpp"
@@ -59,8 +60,7 @@ System channel(const TunableSlipParameters& t, double h, double lx, double densi
     sys.forceParameters = {pairs ? 1.0 : 0.5, 2.0, 1.0, dt};
     sys.seed = 2008;
     if (g != 0.0) {
-        sys.bodyForce.type = BodyForce::Type::uniform;
-        sys.bodyForce.g = Eigen::Vector3d(g, 0, 0);
+        sys.bodyForce = std::make_shared<UniformBodyForce>(Eigen::Vector3d(g, 0, 0));
     }
     sys.walls.addPlane(tunableWall("lower", -h, 1, t));
     sys.walls.addPlane(tunableWall("upper", h, -1, t, upperVelocity));

@@ -2,6 +2,7 @@
 // carrying their frozen particles, and each rule's signature on a gas or a DPD fluid: specular walls
 // slip, bounce-back walls drag the fluid, Maxwellian walls hold the wall temperature, a bounce layer
 // far too thin lets particles through and the crossings are counted.
+#include "forces/UniformBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
 #include "system/System.hpp"
@@ -40,8 +41,7 @@ System lonely(const PlanarWallSettings& w, const Eigen::Vector3d& r, const Eigen
     sys.forceParameters = {1.0, 2.0, 1.0, dt};
     sys.seed = 11;
     if (g.squaredNorm() > 0.0) {
-        sys.bodyForce.type = BodyForce::Type::uniform;
-        sys.bodyForce.g = g;
+        sys.bodyForce = std::make_shared<UniformBodyForce>(g);
     }
     sys.walls.addPlane(w);
     sys.particles.add(7, 0, r.x(), r.y(), r.z(), v.x(), v.y(), v.z());
