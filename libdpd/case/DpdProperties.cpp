@@ -147,12 +147,34 @@ StabilitySettings readStability(const Dictionary& d) {
     StabilitySettings s;
     if (!d.found("stability")) return s;
     const Dictionary& sd = d.subDict("stability");
-    sd.checkKeys({"maxKTRatio", "maxInsideWalls"});
+    sd.checkKeys({"maxKTRatio", "maxInsideWalls", "checkInterval"});
     s.maxKTRatio = sd.getOrDefault<double>("maxKTRatio", s.maxKTRatio);
     if (s.maxKTRatio <= 1.0) sd.fail("maxKTRatio", "must be greater than 1");
     s.maxInsideWalls = sd.getOrDefault<long>("maxInsideWalls", s.maxInsideWalls);
     if (s.maxInsideWalls < 0) sd.fail("maxInsideWalls", "must not be negative");
+    if (sd.found("checkInterval")) s.checkIntervalSteps = sd.getPositive<long>("checkInterval");
     return s;
+}
+
+// Mobile particles inside a wall's solid at the start are a mistaken state (walls return only what
+// crosses during a step): more than the run itself tolerates (stability maxInsideWalls) are refused.
+void requireFewInsideWalls(const System& sys, const DpdModel& model, const std::string& snapshotFile) {
+    long inside = 0;
+    for (std::size_t i = 0; i < sys.particles.size(); ++i) {
+        if (model.species[sys.particles.species[i]].frozen) continue;
+        Eigen::Vector3d r(sys.particles.rx[i], sys.particles.ry[i], sys.particles.rz[i]);
+        sys.box.wrapPoint(r.x(), r.y(), r.z());
+        for (std::size_t w = 0; w < sys.walls.size(); ++w) {
+            if (!sys.walls[w].isInsideSolid(r)) continue;
+            if (++inside <= model.stability.maxInsideWalls) break;
+            std::ostringstream os;
+            os << snapshotFile << ": dataset 'particles/position' row " << i << " holds (" << r.x() << " " << r.y()
+               << " " << r.z() << "), a mobile particle inside the solid of wall '" << sys.walls[w].name() << "' ("
+               << -sys.walls[w].signedDistance(r) << " deep); " << inside << " such particle(s) so far, stability "
+               << "maxInsideWalls allows " << model.stability.maxInsideWalls;
+            throw IoError(os.str());
+        }
+    }
 }
 
 }  // namespace
@@ -225,6 +247,7 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
         sys.walls.add(std::make_shared<GeometryWall>(std::move(solid.distance), model.geometryWall.rule,
                                                      model.geometryWall.layer));
     }
+    requireFewInsideWalls(sys, model, snapshotFile);
     sys.initialise();
     return sys;
 }

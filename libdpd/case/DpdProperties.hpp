@@ -19,7 +19,8 @@
 //              // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; }: a smooth wall acting on the
 //              // fluid within zc (friction gammaL) with a WCA repulsion (walls/TunableSlipWall.hpp);
 //              // its reflection defaults to specular, a safety net behind the WCA wall
-//   stability  { maxKTRatio 2; maxInsideWalls 0; }   // optional
+//   stability  { maxKTRatio 2; maxInsideWalls 0; checkInterval 100; }   // optional; checkInterval in
+//                                                 // steps, besides every report and every write
 //   geometry   { type imageMask; file "constant/geometry/mask.png"; ... }   // optional: a solid of any
 //                                                 // shape (geometry/GeometryDictionary.hpp)
 //   geometryWall { reflection bounceLayer; alpha 0.1; }  // optional, with geometry: how the solver
@@ -48,6 +49,7 @@ struct Snapshot;
 struct StabilitySettings {
     double maxKTRatio = 2.0;  // stop when the measured kT exceeds this multiple of the set kT
     long maxInsideWalls = 0;  // stop when more mobile particles than this are found inside walls
+    long checkIntervalSteps = 100;  // the run's health is checked this often, and before every write
 };
 
 // The wall of any shape: the geometry block, kept to be built on the snapshot's box, and the rule of

@@ -6,6 +6,7 @@
 #include "io/DictionaryDetail.hpp"
 #include "io/DictionaryParser.hpp"
 
+#include <iostream>
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -42,7 +43,9 @@ Dictionary::~Dictionary() = default;
 Dictionary Dictionary::readFile(const std::string& path) {
     std::string text;
     if (!readText(path, text)) throw InputError(path, 0, "", "cannot open file");
-    return parse(text, path);
+    Dictionary d = parse(text, path);
+    for (const std::string& w : d.warnings()) std::cerr << "Warning: " << w << "\n";
+    return d;
 }
 
 Dictionary Dictionary::parse(const std::string& text, const std::string& fileName) {

@@ -45,11 +45,15 @@ public:
     Dictionary& operator=(Dictionary&&) noexcept;
     ~Dictionary();
 
-    // InputError(path, 0, "", "cannot open file") when it cannot be read.
+    // InputError(path, 0, "", "cannot open file") when it cannot be read. Warnings (below) are
+    // printed on stderr as the file is read, so they come first in a case's log.
     static Dictionary readFile(const std::string& path);
     // fileName is used for messages and as the base directory of relative #include paths.
     static Dictionary parse(const std::string& text, const std::string& fileName);
 
+    // What was read but looks mistaken, e.g. a keyword given twice in one dictionary of one file (the
+    // last one is used, as in OpenFOAM; an #include'd default overridden later is not warned about).
+    const std::vector<std::string>& warnings() const { return warnings_; }
     const std::string& fileName() const { return file_; }  // the file this dictionary was read from
     int line() const { return line_; }                      // where it opened; 0 at top level
     std::string path() const { return path_; }              // e.g. "walls/lower"; "" at top level
@@ -122,6 +126,7 @@ private:
     int line_ = 0;
     std::string path_;
     std::vector<detail::DictEntry> entries_;
+    std::vector<std::string> warnings_;  // the top-level dictionary's, from the whole file
 };
 
 // Unsupported types fail at compile time; the supported ones are specialised in Dictionary.cpp.

@@ -44,6 +44,9 @@ struct DictValue {
 
 
 inline constexpr int kMaxIncludeDepth = 32;
+// Sub-dictionaries and lists nested deeper than this are refused (no case needs more; the readers
+// recurse, and garbage must not exhaust the stack).
+inline constexpr int kMaxNesting = 64;
 inline constexpr std::size_t kKeywordColumn = 16;  // OpenFOAM pads keywords to this width
 
 std::string joinPath(const std::string& scope, const std::string& key);

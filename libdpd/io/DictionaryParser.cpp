@@ -21,6 +21,7 @@ namespace dpd {
 using detail::DictEntry;
 using detail::joinPath;
 using detail::kMaxIncludeDepth;
+using detail::kMaxNesting;
 using detail::readText;
 
 // The dictionaries being read are kept in scopes_, innermost last, for macros to search.
@@ -83,11 +84,26 @@ private:
         }
         DictEntry entry(keyTok.text, c.file, keyTok.line);
         entry.value = readValue(c, keyTok);
+        noteRepeated(dict, entry);
         dict.insert(std::move(entry));
+    }
+
+    // A keyword given twice in one dictionary of one file is most likely a slip: the log says so.
+    void noteRepeated(const Dictionary& dict, const DictEntry& entry) {
+        const DictEntry* old = dict.findEntry(entry.key);
+        if (!old || old->file != entry.file) return;
+        const std::string where = dict.path_.empty() ? "" : " in " + dict.path_;
+        scopes_.front()->warnings_.push_back(
+            entry.file + ":" + std::to_string(entry.line) + ": keyword '" + entry.key + "' given twice" + where +
+            " (lines " + std::to_string(old->line) + " and " + std::to_string(entry.line) + "): " +
+            (old->dict && entry.dict ? "the two are merged" : "the last one is used"));
     }
 
     void parseSubDict(Cursor& c, Dictionary& dict, const DictToken& keyTok, bool dropHeader) {
         const DictToken& brace = c.next();
+        if (scopes_.size() > static_cast<std::size_t>(kMaxNesting))
+            throw InputError(c.file, keyTok.line, keyTok.text,
+                             "sub-dictionaries nested more than " + std::to_string(kMaxNesting) + " levels deep");
         auto child = std::make_unique<Dictionary>(c.file);
         child->line_ = keyTok.line;
         child->path_ = joinPath(dict.path_, keyTok.text);
@@ -97,6 +113,7 @@ private:
         if (dropHeader && keyTok.text == "FoamFile") return;
         DictEntry entry(keyTok.text, c.file, keyTok.line);
         entry.dict = std::move(child);
+        noteRepeated(dict, entry);
         dict.insert(std::move(entry));
     }
 
@@ -109,6 +126,7 @@ private:
         entry.dict->file_ = c.file;
         entry.dict->line_ = keyTok.line;
         entry.dict->rescope(joinPath(dict.path_, keyTok.text));
+        noteRepeated(dict, entry);
         dict.insert(std::move(entry));
     }
 
@@ -135,6 +153,9 @@ private:
             c.next();
             if (t.isPunct('(')) {
                 openParens.push_back(t.line);
+                if (openParens.size() > static_cast<std::size_t>(kMaxNesting))
+                    throw InputError(c.file, t.line, key, "lists nested more than " + std::to_string(kMaxNesting) +
+                                                              " levels deep");
             } else if (t.isPunct(')')) {
                 if (openParens.empty())
                     throw InputError(c.file, t.line, key, "unexpected ')' with no matching '('");

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <limits>
+#include <new>
 #include <stdexcept>
 #include <system_error>
 
@@ -43,6 +45,19 @@ std::vector<hsize_t> shapeOf(hid_t space) {
 std::size_t pointCount(hid_t space) {
     const hssize_t n = H5Sget_simple_extent_npoints(space);
     return n > 0 ? static_cast<std::size_t>(n) : 0;
+}
+
+// Room for the n values a dataset or attribute declares; a damaged file can declare more than any
+// machine holds, which is then its error, not an allocator's.
+template <class T>
+std::vector<T> valuesFor(std::size_t n, const std::string& path, const std::string& what) {
+    try {
+        return std::vector<T>(n);
+    } catch (const std::length_error&) {
+    } catch (const std::bad_alloc&) {
+    }
+    throw IoError(path + ": " + what + " declares " + std::to_string(n) +
+                  " values, more than this machine can hold (is the file damaged?)");
 }
 
 // Variable-length UTF-8 string type: what h5py writes for str, and reads back as str.
@@ -104,12 +119,21 @@ bool Hdf5Handle::close() {
     return status >= 0;
 }
 
+// Creation properties without HDF5's object time stamps: the same content gives the same bytes, so a
+// restarted run's files compare equal (cmp) to those of a run never interrupted.
+Hdf5Handle untimedCreation(hid_t propertyClass) {
+    Hdf5Handle properties(H5Pcreate(propertyClass), H5Pclose);
+    H5Pset_obj_track_times(properties.get(), false);
+    return properties;
+}
+
 // ---------------------------------------------------------------------------------------------
 Hdf5Writer::Hdf5Writer(std::string finalPath)
     : finalPath_(std::move(finalPath)), temporaryPath_(finalPath_ + ".tmp" + std::to_string(::getpid())) {
     silenceHdf5Errors();
     const Hdf5Handle fapl = fileAccessProperties();
-    file_ = Hdf5Handle(H5Fcreate(temporaryPath_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
+    const Hdf5Handle fcpl = untimedCreation(H5P_FILE_CREATE);
+    file_ = Hdf5Handle(H5Fcreate(temporaryPath_.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), H5Fclose);
     if (!file_.valid()) fail("cannot create temporary file '" + temporaryPath_ + "'");
 }
 
@@ -121,6 +145,17 @@ Hdf5Writer::~Hdf5Writer() {
 }
 
 void Hdf5Writer::fail(const std::string& message) const { throw IoError(finalPath_ + ": " + message); }
+
+void Hdf5Writer::createParentGroups(const std::string& name) const {
+    const Hdf5Handle groupProperties = untimedCreation(H5P_GROUP_CREATE);
+    for (std::size_t slash = name.find('/', 1); slash != std::string::npos; slash = name.find('/', slash + 1)) {
+        const std::string group = name.substr(0, slash);
+        if (H5Lexists(file_.get(), group.c_str(), H5P_DEFAULT) > 0) continue;
+        const Hdf5Handle created(H5Gcreate2(file_.get(), group.c_str(), H5P_DEFAULT, groupProperties.get(), H5P_DEFAULT),
+                                 H5Gclose);
+        if (!created.valid()) fail("cannot create group '" + group + "'");
+    }
+}
 
 void Hdf5Writer::requireOpen(const std::string& what) const {
     if (!file_.valid()) fail("cannot write " + what + ": file already committed");
@@ -134,10 +169,10 @@ void Hdf5Writer::writeDataset(const std::string& name, hid_t memType, hid_t file
         throw std::invalid_argument(finalPath_ + ": dataset '" + name + "': shape " + shapeText(dims) +
                                     " does not match " + std::to_string(count) + " values");
     const Hdf5Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-    const Hdf5Handle linkProperties(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-    H5Pset_create_intermediate_group(linkProperties.get(), 1);
-    const Hdf5Handle dataset(H5Dcreate2(file_.get(), name.c_str(), fileType, space.get(), linkProperties.get(),
-                                        H5P_DEFAULT, H5P_DEFAULT),
+    createParentGroups(name);
+    const Hdf5Handle datasetProperties = untimedCreation(H5P_DATASET_CREATE);
+    const Hdf5Handle dataset(H5Dcreate2(file_.get(), name.c_str(), fileType, space.get(), H5P_DEFAULT,
+                                        datasetProperties.get(), H5P_DEFAULT),
                              H5Dclose);
     if (!dataset.valid()) fail("cannot create dataset '" + name + "'");
     // An empty vector may hand over a null pointer, which H5Dwrite rejects even for zero elements.
@@ -275,7 +310,7 @@ std::vector<T> Hdf5Reader::readNumeric(const std::string& name, hid_t memType, s
     const Hdf5Handle fileType(H5Dget_type(dataset.get()), H5Tclose);
     if (!convertible(fileType.get(), memType)) fail("dataset '" + name + "' does not hold " + typeWord(memType));
     const Hdf5Handle space(H5Dget_space(dataset.get()), H5Sclose);
-    std::vector<T> values(pointCount(space.get()));
+    std::vector<T> values = valuesFor<T>(pointCount(space.get()), path_, "dataset '" + name + "'");
     if (!values.empty() && H5Dread(dataset.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
         fail("cannot read dataset '" + name + "'");
     if (dims) *dims = shapeOf(space.get());
@@ -319,7 +354,7 @@ std::vector<T> Hdf5Reader::readAttributeNumbers(const std::string& objectPath, c
     if (!convertible(fileType.get(), memType))
         fail("attribute '" + attrName + "' on '" + objectPath + "' does not hold " + typeWord(memType));
     const Hdf5Handle space(H5Aget_space(attribute.get()), H5Sclose);
-    std::vector<T> values(pointCount(space.get()));
+    std::vector<T> values = valuesFor<T>(pointCount(space.get()), path_, "attribute '" + attrName + "'");
     if (!values.empty() && H5Aread(attribute.get(), memType, values.data()) < 0)
         fail("cannot read attribute '" + attrName + "' on '" + objectPath + "'");
     return values;
@@ -372,13 +407,14 @@ std::vector<std::string> Hdf5Reader::attributeStrings(const std::string& objectP
     std::vector<std::string> values;
     if (n == 0) return values;
     if (H5Tis_variable_str(type.get()) > 0) {
-        std::vector<char*> pointers(n, nullptr);
+        std::vector<char*> pointers = valuesFor<char*>(n, path_, what);
         if (H5Aread(attribute.get(), type.get(), pointers.data()) < 0) fail("cannot read " + what);
         for (const char* p : pointers) values.emplace_back(p ? p : "");
         reclaimVariableStrings(type.get(), space.get(), pointers.data());
     } else {
         const std::size_t size = H5Tget_size(type.get());
-        std::vector<char> buffer(n * size);
+        if (size == 0 || n > std::numeric_limits<std::size_t>::max() / size) fail(what + " has a damaged string size");
+        std::vector<char> buffer = valuesFor<char>(n * size, path_, what);
         if (H5Aread(attribute.get(), type.get(), buffer.data()) < 0) fail("cannot read " + what);
         const H5T_str_t padding = H5Tget_strpad(type.get());
         for (std::size_t i = 0; i < n; ++i) values.push_back(trimFixedString(&buffer[i * size], size, padding));

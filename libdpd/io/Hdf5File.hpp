@@ -92,6 +92,7 @@ private:
     void writeAttributeData(const std::string& objectPath, const std::string& attrName, hid_t memType,
                             hid_t fileType, const void* data, std::size_t count, bool scalar);
     void requireOpen(const std::string& what) const;
+    void createParentGroups(const std::string& datasetName) const;  // without time stamps
     [[noreturn]] void fail(const std::string& message) const;
 
     std::string finalPath_;

@@ -5,6 +5,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -210,6 +212,8 @@ Eigen::Vector3d readCorner(const Hdf5Reader& file, const char* name) {
     const std::vector<double> v = file.attributeDoubles("/", name);
     if (v.size() != 3)
         fail(file, "attribute '" + std::string(name) + "' has " + std::to_string(v.size()) + " values, expected 3");
+    for (double x : v)
+        if (!std::isfinite(x)) fail(file, "attribute '" + std::string(name) + "' holds a value that is not finite");
     return {v[0], v[1], v[2]};
 }
 
@@ -275,6 +279,52 @@ void readSpeciesIndices(const Hdf5Reader& file, std::size_t n, std::size_t nSpec
     }
 }
 
+std::string cornerText(const Eigen::Vector3d& r) {
+    std::ostringstream os;
+    os << "(" << r.x() << " " << r.y() << " " << r.z() << ")";
+    return os.str();
+}
+
+std::string rowText(const ParticleArray<double>& x, const ParticleArray<double>& y, const ParticleArray<double>& z,
+                    std::size_t i) {
+    std::ostringstream os;
+    os << std::setprecision(10) << "(" << x[i] << " " << y[i] << " " << z[i] << ")";
+    return os.str();
+}
+
+// Every value of an (n, 3) dataset is a finite number.
+void requireFinite(const Hdf5Reader& file, const std::string& name, const ParticleArray<double>& x,
+                   const ParticleArray<double>& y, const ParticleArray<double>& z) {
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i]))
+            fail(file, "dataset '" + name + "' row " + std::to_string(i) + " holds " + rowText(x, y, z, i) +
+                           ": not a finite number");
+}
+
+// A position may lie outside the box (it is wrapped), but by less than one box length: further out
+// it is a corrupted or mistaken value, not a particle that left the box during a step.
+void requireNearBox(const Hdf5Reader& file, const Box& box, const Particles& p) {
+    const Eigen::Vector3d lo = box.lo - box.length(), hi = box.hi + box.length();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double r[3] = {p.rx[i], p.ry[i], p.rz[i]};
+        for (int a = 0; a < 3; ++a)
+            if (box.isActiveAxis(a) && !(r[a] >= lo[a] && r[a] <= hi[a]))
+                fail(file, "dataset '" + positionName + "' row " + std::to_string(i) + " holds " +
+                               rowText(p.rx, p.ry, p.rz, i) + ": more than one box length outside the box " +
+                               cornerText(box.lo) + " - " + cornerText(box.hi));
+    }
+}
+
+void requireUniqueIds(const Hdf5Reader& file, const Particles& p) {
+    std::vector<std::pair<std::uint64_t, std::size_t>> ids(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) ids[i] = {p.id[i], i};
+    std::sort(ids.begin(), ids.end());
+    for (std::size_t k = 1; k < ids.size(); ++k)
+        if (ids[k].first == ids[k - 1].first)
+            fail(file, "dataset '" + idName + "' holds id " + std::to_string(ids[k].first) + " twice (rows " +
+                           std::to_string(ids[k - 1].second) + " and " + std::to_string(ids[k].second) + ")");
+}
+
 void readParticles(const Hdf5Reader& file, std::size_t nSpecies, Particles& p) {
     // The position dataset fixes N; every other dataset must agree with it.
     std::vector<hsize_t> dims;
@@ -289,6 +339,10 @@ void readParticles(const Hdf5Reader& file, std::size_t nSpecies, Particles& p) {
     p.id.assign(ids.begin(), ids.end());
     requireShape(file, idName, dims, {static_cast<hsize_t>(n)});
     readSpeciesIndices(file, n, nSpecies, p);
+    requireFinite(file, positionName, p.rx, p.ry, p.rz);
+    requireFinite(file, velocityName, p.vx, p.vy, p.vz);
+    requireFinite(file, forceName, p.fx, p.fy, p.fz);
+    requireUniqueIds(file, p);
 }
 
 }  // namespace
@@ -308,10 +362,13 @@ Snapshot readSnapshot(const std::string& h5File) {
     requireFormat(file);
     Snapshot s;
     s.time = file.attributeDouble("/", "time");
+    if (!(std::isfinite(s.time) && s.time >= 0.0)) fail(file, "attribute 'time' is " + std::to_string(s.time));
     s.step = file.attributeInt("/", "step");
+    if (s.step < 0) fail(file, "attribute 'step' is " + std::to_string(s.step));
     s.box = readBox(file);
     readSpecies(file, s);
     readParticles(file, s.speciesNames.size(), s.particles);
+    requireNearBox(file, s.box, s.particles);
     return s;
 }
 

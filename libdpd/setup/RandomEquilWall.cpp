@@ -86,14 +86,22 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     snap.particles = std::move(sys.particles);
 }
 
-// Keeps the fluid (renumbered first) and the solid particles within one cutoff of the fluid.
-Particles freezeWall(const Particles& p, const SolidGeometry& geometry, double cutoff, int fluidSpecies,
+// Keeps the fluid (renumbered first) and the solid particles within one cutoff of the fluid. Fluid is
+// what both the geometry and the run's distance field call fluid: a particle of the geometry's fluid
+// that the field puts inside (a few at the surface, where the interpolated field and the exact shape
+// differ by a fraction of a grid cell) is dropped, so the run starts with no fluid inside its wall
+// and the wall is the geometry's solid, nothing more.
+Particles freezeWall(const Particles& p, const SolidRegion& solid, double cutoff, int fluidSpecies,
                      int wallSpecies, RandomEquilWallReport& report) {
+    const SolidGeometry& geometry = solid.geometry;
     std::vector<std::size_t> fluid, frozen;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const Eigen::Vector3d r(p.rx[i], p.ry[i], p.rz[i]);
-        if (!geometry.isSolid(r)) fluid.push_back(i);
-        else if (geometry.signedDistance(r, 2.0 * cutoff).distance >= -cutoff) frozen.push_back(i);
+        if (!geometry.isSolid(r)) {
+            if (solid.distance.distance(r) >= 0.0) fluid.push_back(i);
+        } else if (geometry.signedDistance(r, 2.0 * cutoff).distance >= -cutoff) {
+            frozen.push_back(i);
+        }
     }
     Eigen::Vector3d mean(0, 0, 0);
     for (const std::size_t i : fluid) mean += Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
@@ -132,9 +140,9 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
     const InitialFlow flow = readInitialFlow(dict.subDict("fluid"), model, snap.box, fluidSpecies, density);
 
     // 1. The geometry and its flags, checked before any particle moves.
-    const SolidGeometry geometry = readGeometry(geometryDict, caseDir, snap.box, model.cutoff);
-    const SolidFlags flags(BackgroundGrid::covering(snap.box, readGridSpacing(geometryDict, model.cutoff),
-                                                    geometry.uniformAxis()), geometry);
+    // The distance field is the one the run's geometry wall uses (case/DpdProperties buildSystem).
+    const SolidRegion solid = readSolidRegion(geometryDict, caseDir, snap.box, model.cutoff);
+    const SolidFlags& flags = solid.flags;
     report.gridPorosity = flags.porosity();
     report.gridCells = flags.grid().n;
     checkFlags(flags, report.drivingAxes, dict, geometryDict);
@@ -147,7 +155,7 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
     equilibrate(snap, dict, model, report);
 
     // 3. Freeze the wall, drop the rest of the solid.
-    snap.particles = freezeWall(snap.particles, geometry, model.cutoff, fluidSpecies, wallSpecies, report);
+    snap.particles = freezeWall(snap.particles, solid, model.cutoff, fluidSpecies, wallSpecies, report);
     addInitialFlow(snap.particles, 0, report.fluid, flow);  // the fluid comes first
     snap.time = 0.0;
     snap.step = 0;

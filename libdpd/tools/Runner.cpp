@@ -4,6 +4,7 @@
 #include "integrators/Integrator.hpp"
 #include "io/Snapshot.hpp"
 #include "io/TimeDirectories.hpp"
+#include "io/TimeDirectoryWriter.hpp"
 #include "case/ControlDict.hpp"
 #include "case/DpdProperties.hpp"
 #include "system/Monitors.hpp"
@@ -106,6 +107,7 @@ public:
     void run() {
         // Everything is read and checked before anything is written.
         const RunControl control = readControlDict(caseDir_);
+        removeUnfinishedTimeDirectories(caseDir_);
         const DpdModel model = readDpdProperties(caseDir_);
         const std::string start = startTimeName(caseDir_, control);
         const std::string snapshotFile = (fs::path(caseDir_) / start / "particles.h5").string();
@@ -126,7 +128,14 @@ private:
     void loop(System& sys, const RunControl& control, const DpdModel& model, FunctionObjects& functions,
               Integrator& integrator) {
         const FlowAxes flowAxes = flowAxesOf(sys);
-        const auto nSteps = static_cast<std::int64_t>(std::llround((control.endTime - sys.time) / control.deltaT));
+        const double stepsLeft = (control.endTime - sys.time) / control.deltaT;
+        if (stepsLeft < -0.5)
+            throw IoError(control.file + ": endTime " + timeName(control.endTime) + " is before the time the run starts from, " +
+                          timeName(sys.time));
+        if (!(stepsLeft <= 9007199254740992.0))
+            throw IoError(control.file + ": endTime " + timeName(control.endTime) + " is more than 2^53 steps after " +
+                          timeName(sys.time));
+        const auto nSteps = static_cast<std::int64_t>(std::llround(stepsLeft));
         const std::int64_t firstStep = sys.step;
         lastGood_ = snapshotOf(sys);
         WallCounters interval;
@@ -137,19 +146,23 @@ private:
             interval.accumulate(integrator.step(sys));
             functions.execute(sys);
             const bool report = k % control.reportIntervalSteps == 0 || k == nSteps;
+            const bool writeNow = (sys.step - firstStep) % control.writeIntervalSteps == 0 || k == nSteps;
+            // Health is checked at every report, before every write (nothing unhealthy is written) and
+            // at least every checkInterval steps (a runaway stops soon, whatever the report interval).
+            if (!report && !writeNow && k % model.stability.checkIntervalSteps != 0) continue;
+            const MonitorReport m = monitor(sys, flowAxes);
             if (report) {
                 const auto now = Clock::now();
                 const double elapsed = std::chrono::duration<double>(now - t0).count();
                 const double rate = (k - stepsAtReport) / std::chrono::duration<double>(now - tReport).count();
                 tReport = now;
                 stepsAtReport = k;
-                const MonitorReport m = monitor(sys, flowAxes);
                 printReport(sys, m, interval, elapsed, rate, nSteps - k);
                 interval = WallCounters();
-                checkStability(sys, m, model);
-                lastGood_ = snapshotOf(sys);
             }
-            if ((sys.step - firstStep) % control.writeIntervalSteps == 0 || k == nSteps) write(sys, functions);
+            checkStability(sys, m, model);
+            lastGood_ = snapshotOf(sys);
+            if (writeNow) write(functions, sys);
         }
         const double total = std::chrono::duration<double>(Clock::now() - t0).count();
         log_ << "\nRun finished: " << nSteps << " steps in " << std::setprecision(4) << total << " s, "
@@ -189,17 +202,21 @@ private:
                       std::to_string(model.stability.maxInsideWalls) + ")";
         if (problem.empty()) return;
         const std::string dir = (fs::path(caseDir_) / timeName(lastGood_.time)).string();
-        writeSnapshot(dir, lastGood_);
+        // Only the particles: the sampling of that time, if it was written, stays as it was.
+        if (!fs::exists(fs::path(dir) / "particles.h5"))
+            writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& d) { writeSnapshot(d, lastGood_); });
         throw InstabilityError("the run went unstable at time " + timeName(sys.time) + " (step " +
                                std::to_string(sys.step) + "): " + problem + ". The last good state, time " +
                                timeName(lastGood_.time) + ", is written to " + dir);
     }
 
-    void write(const System& sys, const FunctionObjects& functions) {
-        const std::string dir = (fs::path(caseDir_) / timeName(sys.time)).string();
-        writeSnapshot(dir, snapshotOf(sys));
-        functions.write(dir, sys);
-        log_ << "Writing time " << timeName(sys.time) << "\n";
+    // Writes the state just checked (lastGood_) and the function objects' data, as one directory.
+    void write(const FunctionObjects& functions, const System& sys) {
+        writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& dir) {
+            writeSnapshot(dir, lastGood_);
+            functions.write(dir, sys);
+        });
+        log_ << "Writing time " << timeName(lastGood_.time) << "\n";
     }
 
     std::string caseDir_;

@@ -10,33 +10,10 @@ trap 'rm -rf "$work"' EXIT
 . "$src/tests/shellTestFunctions" || exit 1
 
 
-header='FoamFile { version 2.0; format ascii; class dictionary; }'
-
 # A small channel: walls at z = -3 and 3, fluid between, frozen lattice walls behind.
 makeCase() {
     local c=$1
-    mkdir -p "$c/system" "$c/constant"
-    cat > "$c/constant/dpdProperties" <<EOD
-$header
-dimension 3;
-kT 1;
-seed 3;
-species { fluid { frozen no; } wall { frozen yes; } }
-pairCoeffs { fluid-fluid { a 18.75; gamma 4.5; } fluid-wall { a 18.75; gamma 4.5; } }
-integrator { type GrootWarren; lambda 0.65; }
-bodyForce { type uniform; value (0.05 0 0); }
-walls
-{
-    lower { type plane; point (0 0 -3); normal (0 0 1); reflection bounceBack; }
-    upper { type plane; point (0 0 3); normal (0 0 -1); reflection bounceBack; }
-}
-EOD
-    cat > "$c/system/blockFrozenWallDict" <<EOD
-$header
-box { min (-2 -2 -4); max (2 2 4); }
-fluid { species fluid; density 4; }
-wall { species wall; lattice fcc; density 4; }
-EOD
+    writeChannel "$c" 3 "(-2 -2 -4)" "(2 2 4)" 3
     cat > "$c/system/controlDict" <<EOD
 $header
 application dpdFoamLike;

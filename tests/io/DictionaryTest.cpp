@@ -209,6 +209,30 @@ sub { y 5; z 6; }
     EXPECT_EQ(sub.get<int>("x"), 1);
     EXPECT_EQ(sub.get<int>("y"), 5);
     EXPECT_EQ(sub.get<int>("z"), 6);
+    // Both are taken, but neither silently: each repetition is a warning naming both lines.
+    ASSERT_EQ(d.warnings().size(), 2u);
+    EXPECT_EQ(d.warnings()[0], "dups:3: keyword 'a' given twice (lines 1 and 3): the last one is used");
+    EXPECT_EQ(d.warnings()[1], "dups:5: keyword 'sub' given twice (lines 4 and 5): the two are merged");
+    const Dictionary nested = Dictionary::parse("walls\n{\n  lower { a 1;\n  a 2; }\n}\n", "n");
+    ASSERT_EQ(nested.warnings().size(), 1u);
+    EXPECT_EQ(nested.warnings()[0], "n:4: keyword 'a' given twice in walls/lower (lines 3 and 4): the last one is used");
+    EXPECT_TRUE(Dictionary::parse("a 1;\nb { a 2; }\n", "x").warnings().empty()) << "one per dictionary";
+}
+
+// Nesting deeper than any case needs is refused at the line where it goes too deep, not followed
+// until the stack runs out.
+TEST(DictionaryParse, DeepNestingIsRefused) {
+    std::string dicts, lists = "a ";
+    for (int k = 0; k < 100000; ++k) dicts += "d {\n";
+    for (int k = 0; k < 100000; ++k) lists += "(";
+    const std::string msg = expectInputError([&] { Dictionary::parse(dicts, "deep"); }, "deep", 65, "d");
+    EXPECT_TRUE(contains(msg, "nested more than 64")) << msg;
+    expectInputError([&] { Dictionary::parse(lists, "lists"); }, "lists", 1, "a");
+    std::string ok;
+    for (int k = 0; k < 60; ++k) ok += "d { ";
+    ok += "x 1;";
+    for (int k = 0; k < 60; ++k) ok += " }";
+    EXPECT_NO_THROW(Dictionary::parse(ok, "ok"));
 }
 
 TEST(DictionaryParse, QuotedStringsAndEmptyValues) {
@@ -335,6 +359,16 @@ vel $walls.velocity;
     // Errors about included entries name the included file and its line.
     expectInputError([&] { d.get<double>("bad"); }, pathOf("system/common/defaults"), 4, "bad");
     EXPECT_EQ(d.lineOf("deltaT"), 2);
+    EXPECT_TRUE(d.warnings().empty()) << "an included default overridden is no slip";
+}
+
+TEST_F(DictionaryFiles, RepeatedKeywordsAreWarnedAboutOnStderr) {
+    const std::string main = write("dpdProperties", "kT 1;\nseed 2;\nkT 1.5;\n");
+    ::testing::internal::CaptureStderr();
+    const Dictionary d = Dictionary::readFile(main);
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(d.get<double>("kT"), 1.5);
+    EXPECT_EQ(err, "Warning: " + main + ":3: keyword 'kT' given twice (lines 1 and 3): the last one is used\n");
 }
 
 TEST_F(DictionaryFiles, MissingIncludeNamesIncludingFileAndLine) {

@@ -4,12 +4,14 @@
 #include "io/Hdf5File.hpp"
 
 #include <gtest/gtest.h>
+
 #include <unistd.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -74,9 +76,17 @@ dpd::Snapshot randomSnapshot(std::size_t n, int dimension, std::uint64_t seed) {
     s.time = 0.1 + 0.2;  // not representable exactly in decimal: must survive bit for bit
     s.step = 123456789012LL;
     auto& p = s.particles;
+    // Positions within half a box length of the box (a snapshot may hold unwrapped ones; the reader
+    // refuses those more than a box length out).
+    const auto near = [&](int a) {
+        const double l = s.box.hi[a] - s.box.lo[a];
+        return std::uniform_real_distribution<double>(s.box.lo[a] - 0.5 * l, s.box.hi[a] + 0.5 * l)(rng);
+    };
     for (std::size_t i = 0; i < n; ++i) {
-        const double y = dimension == 3 ? uniform(rng) : 0.0;
-        p.add(rng(), static_cast<int>(rng() % 3), uniform(rng), y, uniform(rng), uniform(rng),
+        const double x = near(0);
+        const double y = dimension == 3 ? near(1) : 0.0;
+        const double z = near(2);
+        p.add(rng(), static_cast<int>(rng() % 3), x, y, z, uniform(rng),
               dimension == 3 ? uniform(rng) : 0.0, uniform(rng));
         p.fx.back() = uniform(rng);
         p.fy.back() = dimension == 3 ? uniform(rng) : 0.0;
@@ -485,4 +495,34 @@ TEST_F(SnapshotTest, H5pyReadsTheFile) {
                              "assert list(f.attrs['speciesFrozen']) == [0, 1, 0]\n";
     const std::string command = "/usr/bin/python3 '" + script + "' '" + path("1.25/particles.h5") + "'";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
+}
+
+// Values no run can have written are refused on reading, naming the file, the dataset and the row:
+// a non-finite number anywhere, a position more than one box length outside the box, an id twice.
+TEST_F(SnapshotTest, ImpossibleValuesAreRefusedNamingDatasetAndRow) {
+    const auto refused = [&](const std::string& name, const std::function<void(dpd::Snapshot&)>& spoil,
+                             const std::vector<std::string>& fragments) {
+        SCOPED_TRACE(name);
+        dpd::Snapshot s = randomSnapshot(40, 3, 5);
+        spoil(s);
+        dpd::writeSnapshot(path(name), s);
+        const std::string file = path(name + "/particles.h5");
+        std::vector<std::string> all = fragments;
+        all.push_back(file);
+        expectIoError([&] { dpd::readSnapshot(file); }, all);
+    };
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    refused("1", [&](dpd::Snapshot& s) { s.particles.rz[17] = nan; }, {"'particles/position' row 17", "nan"});
+    refused("2", [&](dpd::Snapshot& s) { s.particles.vy[3] = std::numeric_limits<double>::infinity(); },
+            {"'particles/velocity' row 3"});
+    refused("3", [&](dpd::Snapshot& s) { s.particles.fx[39] = -nan; }, {"'particles/force' row 39"});
+    // z = 1e6 in a box 2.25..12.125; 22 = hi + 1.0 box length is still read (wrapped by the run).
+    refused("4", [&](dpd::Snapshot& s) { s.particles.rz[8] = 1e6; }, {"'particles/position' row 8", "1000000",
+                                                                       "more than one box length outside"});
+    refused("5", [&](dpd::Snapshot& s) { s.particles.id[30] = s.particles.id[4]; }, {"'particles/id'", "rows 4 and 30"});
+    refused("6", [&](dpd::Snapshot& s) { s.time = nan; }, {"attribute 'time'"});
+    dpd::Snapshot edge = randomSnapshot(40, 3, 5);
+    edge.particles.rz[8] = 12.125 + 9.875;
+    dpd::writeSnapshot(path("7"), edge);
+    EXPECT_NO_THROW(dpd::readSnapshot(path("7/particles.h5")));
 }
