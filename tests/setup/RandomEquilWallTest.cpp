@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace dpd;
 using namespace geometryTest;
@@ -67,7 +68,12 @@ TEST_F(RandomEquilWall, ChannelCountsPorosityAndFrozenDensity) {
     EXPECT_EQ(r.fluid + r.frozen + r.dropped, r.filled);
     EXPECT_EQ(s.particles.size(), r.fluid + r.frozen);
     EXPECT_DOUBLE_EQ(r.gridPorosity, 5.0 / 8.0);   // the fluid is 1.5 < z < 6.5
-    EXPECT_NEAR(r.equilibratedKT, 1.0, 0.2);
+    // The instantaneous kT of the 768 particles scatters by sqrt(2 / (3 N)) = 0.030 about 1 (the random
+    // start's excess heat is gone within the 2 time units of equilibration: the thermostat relaxes it
+    // in ~0.2); 4 of those, 0.12. NaN fails.
+    const double kTScatter = std::sqrt(2.0 / (3.0 * static_cast<double>(r.filled)));
+    EXPECT_TRUE(std::abs(r.equilibratedKT - 1.0) <= 4.0 * kTScatter) << "kT " << r.equilibratedKT;
+    std::printf("    equilibrated kT %.4f (scatter %.4f)\n", r.equilibratedKT, kTScatter);
     // Counts in a region of volume V of the uniform equilibrated fluid: mean density x V, with at most
     // Poisson scatter sqrt(mean) (a DPD liquid is less compressible than an ideal gas, so its number
     // fluctuations are smaller); 4 standard deviations.

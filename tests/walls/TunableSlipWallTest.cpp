@@ -156,9 +156,10 @@ TEST(TunableSlipWall, SystemAddsTheWallForceRelativeToTheWallVelocity) {
 // bath but the walls, so it must take their kT = 1 from any start (here kT = 0.25). Walls 2 apart with
 // z_c = 1 reach the whole gas; gamma_L = 1 relaxes its energy in ~1/(2 gamma_L <w_L>) = 1. Kinetic
 // temperature sampled every 0.2 for 200 time units after 20 of relaxation (e^-20 of the start left), in
-// blocks of 10 (many relaxation times each, so block means are independent). Tolerance: 4 standard
-// errors of the block means (a false failure 1 in 16000) plus the discretisation bias of the friction
-// step, bounded by gamma_L dt / 2 = 0.5 % (first order in gamma dt for the velocity-Verlet-like scheme).
+// blocks of 10 (many relaxation times each, so block means are independent). The standard error of the
+// block means must be within a budget of 0.015 (measured 0.008-0.011 per axis; 20 blocks give the
+// error itself to ~16 %): a noisier run fails. The bound, fixed: 4 budgets plus the discretisation bias
+// of the friction step, bounded by gamma_L dt / 2 = 0.5 % (first order in gamma dt), 0.065.
 // A random force off by the w_L^(1/2) (w_L instead) gives kT = <w^2>/<w> ~ 0.67, by sqrt(dt) far more.
 TEST(TunableSlipWall, GasHeldOnlyByTheWallsTakesTheirTemperature) {
     const double dt = 0.01, gammaL = 1.0;
@@ -184,9 +185,10 @@ TEST(TunableSlipWall, GasHeldOnlyByTheWallsTakesTheirTemperature) {
     for (int a = 0; a < 3; ++a) {
         double mean = 0.0;
         for (double m : blockMeans[a]) mean += m / blocks;
-        const double err = standardErrorOfMean(blockMeans[a]);
-        const double tol = 4.0 * err + 0.5 * gammaL * dt;
-        EXPECT_NEAR(mean, 1.0, tol) << "axis " << a << ": kT " << mean << " +- " << err;
+        const double err = standardErrorOfMean(blockMeans[a]), budget = 0.015;
+        const double tol = 4.0 * budget + 0.5 * gammaL * dt;
+        EXPECT_TRUE(err <= budget) << "axis " << a << ": standard error " << err << " over the budget " << budget;
+        EXPECT_TRUE(std::abs(mean - 1.0) <= tol) << "axis " << a << ": kT " << mean << " +- " << err;
         std::printf("tunable-slip gas, axis %d: kT = %.4f +- %.4f (tolerance %.4f)\n", a, mean, err, tol);
     }
     EXPECT_EQ(crossed, 0);
