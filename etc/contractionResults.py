@@ -10,8 +10,9 @@ across the channel; writes results.dat; exits non-zero when a check fails:
     well under 1 % (README, integrators), the bounce layer emits at kT, and the viscous heating of
     this slow flow is far below 1 %: 3 % is a margin, not a fit);
   - the mass flux rho ux integrated across the channel is the same at every section (steady,
-    incompressible flow: what enters the contraction leaves it), within 5 standard errors plus 10 %
-    of the mean flux in test mode, whose run is too short for the flow to be steady.
+    incompressible flow: what enters the contraction leaves it), within 5 standard errors, in test
+    mode as in the full run.
+Every check is written so that a NaN fails it.
 """
 import glob
 import math
@@ -101,15 +102,15 @@ def main(title, test_mode):
     failures = []
     if inside != 0:
         failures.append(f"{inside} fluid particles inside the solid at the end")
-    if abs(mean_kT - 1.0) > 0.03:
+    if not abs(mean_kT - 1.0) <= 0.03:
         failures.append(f"mean kT {mean_kT:.4f} differs from 1 by more than 3 %")
     fluxes = np.array([r[1] for r in rows])
     errors = np.array([r[2] for r in rows])
     mean_flux = np.mean(fluxes)
-    allowed = 5 * errors + (0.1 * abs(mean_flux) if test_mode else 0.0)
-    if np.any(np.abs(fluxes - mean_flux) > allowed):
+    allowed = 5 * errors
+    if not np.all(np.abs(fluxes - mean_flux) <= allowed):
         failures.append(f"the flux differs between sections: {fluxes} (allowed deviation {allowed})")
-    if mean_flux <= 0:
+    if not mean_flux > 0:
         failures.append(f"no flow along the body force: mean flux {mean_flux}")
     with open("results.dat") as f:
         print(f.read(), end="")
