@@ -33,18 +33,28 @@ EOD
 # Every time directory holds a readable snapshot (a zero-step run from it reads and checks it) and,
 # once sampling has started (t >= 2), its sampling file.
 checkWhole() {
-    local c=$1 t name
+    local c=$1 t name sampled=0
     for t in "$c"/[0-9]*; do
         name=$(basename "$t")
         [ "$name" = 0 ] && continue
         [ -f "$t/particles.h5" ] || { fail "time $name has no particles.h5"; continue; }
         if awk "BEGIN { exit !($name >= 2.2) }"; then
             [ -f "$t/sampling/channel.h5" ] || fail "time $name has no sampling/channel.h5"
+            sampled=1
         fi
     done
     ls -a "$c" | grep -q '^\.writing-' && echo "    (an unfinished .writing- directory was left, as designed)"
+    # A kill before the first sampled write leaves nothing for profileBins (it says so and fails, rightly).
+    [ "$sampled" = 1 ] || return 0
     "$bin/profileBins" -case "$c" > "$c/log.profileBins.check" 2>&1 || fail "profileBins cannot read the times: $(tail -3 "$c/log.profileBins.check")"
     rm -rf "$c/postProcessing"
+}
+
+countTimes() { ls -d "$1"/[0-9]* 2>/dev/null | wc -l; }
+
+# Returns when the case holds $2 time directories or the run $3 has ended.
+waitForTimes() {
+    while kill -0 "$3" 2>/dev/null && [ "$(countTimes "$1")" -lt "$2" ]; do sleep 0.005; done
 }
 
 reference=$work/reference
@@ -58,22 +68,26 @@ c=$work/killed
 makeCase "$c"
 RANDOM=12345
 kills=0
+finished=0
 for attempt in $(seq 1 60); do
+    before=$(countTimes "$c")
     "$bin/dpdFoamLike" -case "$c" > "$c/log.$attempt" 2>&1 &
     pid=$!
-    # A moment within the first 60 % of an uninterrupted run: most attempts are cut short.
-    delay=$(echo "scale=3; $seconds * 0.6 * $RANDOM / 32767" | bc)
-    sleep "$delay"
+    # Killed after 5 to 30 more writes (of 100) and a moment of up to one write interval, so that
+    # kills land both between and inside writes whatever the machine's speed.
+    waitForTimes "$c" $((before + 5 + RANDOM % 26)) "$pid"
+    sleep "$(echo "scale=3; $seconds / 100 * $RANDOM / 32767" | bc)"
     if kill -9 "$pid" 2>/dev/null; then
         wait "$pid" 2>/dev/null
         kills=$((kills + 1))
         checkWhole "$c"
     else
-        wait "$pid" && break
+        wait "$pid" && { finished=1; break; }
         fail "attempt $attempt failed: $(tail -3 "$c/log.$attempt")"
         break
     fi
 done
+[ "$finished" = 1 ] || fail "the run did not finish in $attempt attempts"
 echo "killed $kills times, finished on attempt $attempt"
 [ "$kills" -ge 3 ] || fail "only $kills kills: the test did not interrupt the run"
 checkWhole "$c"
