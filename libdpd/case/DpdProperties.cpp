@@ -143,6 +143,15 @@ GeometryWallSettings readGeometryWall(const Dictionary& d, double cutoff) {
     return g;
 }
 
+// Taking back part of a bonded pair's force is done after the whole pair force, which the schemes
+// that split the pair force into parts (DPD-VV, Shardlow) do not compute.
+BondedPairs readBondedPairs(const Dictionary& bonds, const IntegratorSettings& integrator) {
+    const BondedPairs b = BondedPairs::read(bonds);
+    if (!b.keepsAll() && integrator.type != "GrootWarren" && integrator.type != "Euler")
+        bonds.subDict("bondedPairs").fail("dpd", "other than all needs the GrootWarren or Euler integrator, not " + integrator.type);
+    return b;
+}
+
 StabilitySettings readStability(const Dictionary& d) {
     StabilitySettings s;
     if (!d.found("stability")) return s;
@@ -177,12 +186,35 @@ void requireFewInsideWalls(const System& sys, const DpdModel& model, const std::
     }
 }
 
+// The snapshot's bonds, with the model's spring; only mobile particles, every bond shorter than the
+// spring allows.
+void addBonds(System& sys, const DpdModel& model, Bonds bonds, const std::string& snapshotFile) {
+    if (bonds.empty()) return;
+    if (!model.bondPotential)
+        throw IoError(snapshotFile + " holds " + std::to_string(bonds.size()) +
+                      " bonds but constant/dpdProperties has no bonds block (e.g. bonds { type FENE; H 6; rMax 3; })");
+    const double maxLength = model.bondPotential->maxLength();
+    for (std::size_t k = 0; k < bonds.size(); ++k)
+        if (!(bonds.vector(k).norm() < maxLength))
+            throw IoError(snapshotFile + ": dataset 'bonds/vector' row " + std::to_string(k) + " is a bond of length " +
+                          std::to_string(bonds.vector(k).norm()) + ", not shorter than the bonds' rMax " + std::to_string(maxLength));
+    sys.bonds = ChainBonds(std::move(bonds));
+    sys.bondPotential = model.bondPotential;
+    sys.bondedPairs = model.bondedPairs;
+    sys.bonds.locate(sys.particles);
+    const Bonds& b = sys.bonds.bonds();
+    for (std::size_t k = 0; k < b.size(); ++k)
+        for (std::uint64_t id : {b.first[k], b.second[k]})
+            if (model.species[sys.particles.species[sys.bonds.indexOf(id)]].frozen)
+                throw IoError(snapshotFile + ": particle " + std::to_string(id) + " is bonded but of a frozen species");
+}
+
 }  // namespace
 
 DpdModel readDpdModel(const Dictionary& d) {
     // geometry: the solid of any shape, read where it is used (geometry/GeometryDictionary).
     d.checkKeys({"dimension", "kT", "cutoff", "seed", "weightExponent", "species", "pairCoeffs", "integrator",
-                 "bodyForce", "walls", "stability", "geometry", "geometryWall"});
+                 "bodyForce", "bonds", "walls", "stability", "geometry", "geometryWall"});
     DpdModel m;
     m.dimension = d.getOrDefault<int>("dimension", 3);
     if (m.dimension != 2 && m.dimension != 3) d.fail("dimension", "must be 2 or 3");
@@ -196,6 +228,8 @@ DpdModel readDpdModel(const Dictionary& d) {
     m.pairs = readPairs(d, m.species, m.pairNotes);
     m.integrator = readIntegrator(d);
     m.bodyForce = readBodyForce(d, m.dimension);  // forces/BodyForceTypes.cpp
+    m.bondPotential = readBondPotential(d);         // forces/BondPotentialTypes.cpp
+    if (m.bondPotential) m.bondedPairs = readBondedPairs(d.subDict("bonds"), m.integrator);
     m.walls = readWalls(d, m.dimension, m.cutoff);
     makeIntegrator(m.integrator, m.walls);  // the type refuses walls it cannot run
     m.geometryWall = readGeometryWall(d, m.cutoff);
@@ -248,6 +282,7 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
                                                      model.geometryWall.layer));
     }
     requireFewInsideWalls(sys, model, snapshotFile);
+    addBonds(sys, model, std::move(snapshot.bonds), snapshotFile);
     sys.initialise();
     return sys;
 }

@@ -21,6 +21,9 @@
 //              // its reflection defaults to specular, a safety net behind the WCA wall
 //   stability  { maxKTRatio 2; maxInsideWalls 0; checkInterval 100; }   // optional; checkInterval in
 //                                                 // steps, besides every report and every write
+//   bonds      { type FENE; H 6; rMax 3; bondedPairs { dpd all; } }   // optional: polymer chains (their
+//                                                 // bonds are in the snapshot); bondedPairs dpd all | none
+//                                                 // | weighted (with weight w), forces/BondedPairs.hpp
 //   geometry   { type imageMask; file "constant/geometry/mask.png"; ... }   // optional: a solid of any
 //                                                 // shape (geometry/GeometryDictionary.hpp)
 //   geometryWall { reflection bounceLayer; alpha 0.1; }  // optional, with geometry: how the solver
@@ -31,6 +34,8 @@
 // of frozen species never interact and need none.
 #include "core/Species.hpp"
 #include "forces/BodyForce.hpp"
+#include "forces/BondPotential.hpp"
+#include "forces/BondedPairs.hpp"
 #include "integrators/Integrator.hpp"
 #include "walls/ReflectionRule.hpp"
 #include "walls/WallList.hpp"
@@ -71,6 +76,8 @@ struct DpdModel {
     PairTable pairs;
     IntegratorSettings integrator;
     std::shared_ptr<const BodyForce> bodyForce = noBodyForce();
+    std::shared_ptr<const BondPotential> bondPotential;  // null: the case has no bonds block
+    BondedPairs bondedPairs;
     WallList walls;  // the walls block's walls (planar)
     GeometryWallSettings geometryWall;
     StabilitySettings stability;

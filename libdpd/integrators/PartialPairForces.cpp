@@ -22,6 +22,7 @@ void computeConservativeForces(System& sys) {
             accumulatePairForces(sys.particles, contextOf(sys), conservative, params.cutoff);
         });
     sys.bodyForce->apply(sys.particles, sys.frozenOfSpecies(), sys.box);
+    sys.addBondForces();
 }
 
 void addDissipativeForces(System& sys) {

@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "io/Hdf5File.hpp"
+#include "io/SnapshotBonds.hpp"
 
 #include <unistd.h>
 
@@ -68,6 +69,7 @@ void checkConsistent(const Snapshot& s) {
             throw std::invalid_argument("writeSnapshot: particle " + std::to_string(p.id[i]) + " has species index " +
                                         std::to_string(p.species[i]) + " but only " +
                                         std::to_string(s.speciesNames.size()) + " species are named");
+    checkBondsConsistent(s);
 }
 
 void writeParticleData(Hdf5Writer& file, const Particles& p) {
@@ -115,6 +117,7 @@ void writeHdf5(const fs::path& path, const Snapshot& s) {
     Hdf5Writer file(path.string());
     writeParticleData(file, s.particles);
     writeConnectivity(file, s.particles.size());
+    writeBonds(file, s);
     writeRootAttributes(file, s);
     file.commit();
 }
@@ -143,6 +146,21 @@ std::string xdmfAttribute(const char* name, const char* type, const std::string&
            "        " + item + "\n      </Attribute>\n";
 }
 
+// The bonds as line cells over the same positions, so ParaView draws the chains.
+std::string xdmfBondGrid(const Snapshot& s) {
+    const std::string m = std::to_string(s.bonds.size());
+    const std::string n = std::to_string(s.particles.size());
+    std::string text = "    <Grid Name=\"bonds\" GridType=\"Uniform\">\n";
+    text += "      <Time Value=\"" + exactNumber(s.time) + "\"/>\n";
+    text += "      <Topology TopologyType=\"Polyline\" NumberOfElements=\"" + m + "\" NodesPerElement=\"2\">\n";
+    text += "        " + dataItem(m + " 2", "Int", 8, bondConnectivityName) + "\n      </Topology>\n";
+    text += "      <Geometry GeometryType=\"XYZ\">\n";
+    text += "        " + dataItem(n + " 3", "Float", 8, positionName) + "\n      </Geometry>\n";
+    text += xdmfAttribute("chain", "Scalar", dataItem(n, "Int", 8, particleChainName));
+    text += "    </Grid>\n";
+    return text;
+}
+
 // Xdmf3 knows no unsigned 64-bit type, so ids are declared Int 8; HDF5 converts on reading, exact
 // for every id below 2^63. Species are int32 in the file and declared so.
 std::string xdmfText(const Snapshot& s) {
@@ -160,7 +178,10 @@ std::string xdmfText(const Snapshot& s) {
     text += xdmfAttribute("force", "Vector", dataItem(rows, "Float", 8, forceName));
     text += xdmfAttribute("species", "Scalar", dataItem(n, "Int", 4, speciesName));
     text += xdmfAttribute("id", "Scalar", dataItem(n, "Int", 8, idName));
-    text += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+    if (!s.bonds.empty()) text += xdmfAttribute("chain", "Scalar", dataItem(n, "Int", 8, particleChainName));
+    text += "    </Grid>\n";
+    if (!s.bonds.empty()) text += xdmfBondGrid(s);
+    text += "  </Domain>\n</Xdmf>\n";
     return text;
 }
 
@@ -369,6 +390,7 @@ Snapshot readSnapshot(const std::string& h5File) {
     readSpecies(file, s);
     readParticles(file, s.speciesNames.size(), s.particles);
     requireNearBox(file, s.box, s.particles);
+    readBonds(file, s);
     return s;
 }
 

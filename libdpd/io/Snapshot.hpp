@@ -24,7 +24,10 @@
 //     speciesNames   strings (nSpecies)   variable-length UTF-8
 //     speciesFrozen  int64 (nSpecies)     1 = frozen (wall) species, 0 = mobile
 //
+//   bonds (polymer chains), only where there are some: io/SnapshotBonds.hpp
+//
 // Example:  f = h5py.File("0.5/particles.h5"); r = f["particles/position"][:]; t = f.attrs["time"]
+#include "core/Bonds.hpp"
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
 
@@ -45,6 +48,7 @@ struct Snapshot {
     std::vector<bool> speciesFrozen;         // same length as speciesNames; empty means none frozen
     double time = 0.0;
     std::int64_t step = 0;
+    Bonds bonds;                             // empty without polymer chains
 };
 
 // Writes <timeDir>/particles.h5 and <timeDir>/particles.xmf (Polyvertex topology; attributes

@@ -1,5 +1,6 @@
 #include "system/System.hpp"
 
+#include "forces/BondedPairCorrection.hpp"
 #include "forces/PairForceLoop.hpp"
 
 #include <chrono>
@@ -70,6 +71,8 @@ void System::initialise() {
             particles.vy[i] = 0.0;
         }
     frozenPerWall_ = walls.assignFrozenVelocities(particles, frozenOfSpecies_);
+    if (!bonds.empty() && !bondPotential) throw std::invalid_argument("bonds without a bond potential");
+    bonds.locate(particles);
     wrapPositions();
     walls.recordPositions(particles, frozenOfSpecies_);
     initialised_ = true;
@@ -88,6 +91,7 @@ void System::sortByCell(SortForces forces) {
     if (forces == SortForces::Leave && forcesLeftBySort_)
         throw std::logic_error("System::sortByCell: the forces the last sort left behind were never computed again");
     cells_.sortParticles(particles, frozenOfSpecies_, forces);
+    if (!bonds.empty()) bonds.locate(particles);
     forcesLeftBySort_ = forces == SortForces::Leave;
 }
 
@@ -105,11 +109,20 @@ void System::computeForces(double predictorShift) {
                               {predictorShift, &frozenOfSpecies_, forceOrder}, true};
     pairKernel_(particles, ctx, forceParameters);
     forcesLeftBySort_ = false;  // written over by the pair forces
+    if (bondedPairsCorrected())
+        correctBondedPairs(bonds, bondedPairs, {pairs, forceParameters, random_, static_cast<std::uint64_t>(step)}, box,
+                           particles);
     bodyForce->apply(particles, frozenOfSpecies_, box);
+    addBondForces();
     if (wallForces_) {
         WallStep s = wallStep();
         walls.addForces(s);
     }
+}
+
+void System::addBondForces() {
+    if (bonds.empty()) return;
+    bondPass_ = bondPotential->addForces(bonds, particles, box);
 }
 
 WallStep System::wallStep() {

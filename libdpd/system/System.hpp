@@ -5,6 +5,9 @@
 #include "core/Particles.hpp"
 #include "core/Species.hpp"
 #include "forces/BodyForce.hpp"
+#include "forces/BondPotential.hpp"
+#include "forces/BondedPairs.hpp"
+#include "forces/ChainBonds.hpp"
 #include "forces/DpdPairForce.hpp"
 #include "neighbour/CellList.hpp"
 #include "random/PairRandom.hpp"
@@ -36,6 +39,9 @@ public:
     std::uint64_t seed = 1;
     std::shared_ptr<const BodyForce> bodyForce = noBodyForce();
     WallList walls;  // in the order they act: the planar walls, then a wall of any shape (geometry)
+    ChainBonds bonds;  // polymer chains; empty without
+    std::shared_ptr<const BondPotential> bondPotential;  // the bonds' spring; needed when there are bonds
+    BondedPairs bondedPairs;  // how much of the DPD pair force bonded particles feel
     std::int64_t step = 0;
     double time = 0.0;
     StepTimes* stepTimes = nullptr;  // when set, the methods below add their times to it
@@ -71,8 +77,15 @@ public:
     // alone. Only where the pair forces are the only velocity-dependent ones (see below); throws
     // std::logic_error otherwise.
     void computeForces(double predictorShift);
+    // Adds the bonds' spring forces (nothing without bonds); part of computeForces, and of the
+    // conservative forces of integrators that split the pair force.
+    void addBondForces();
+    // What the last bond pass found: a broken bond (at or beyond the potential's length) stops a run.
+    const BondPassResult& bondPass() const { return bondPass_; }
     // Whether any force but the pair forces depends on the velocities (walls' forces, e.g. friction).
-    bool hasVelocityDependentNonPairForces() const { return wallForces_; }
+    // (Taking back part of a bonded pair's DPD force is one: it reads the velocities.)
+    bool hasVelocityDependentNonPairForces() const { return wallForces_ || bondedPairsCorrected(); }
+    bool bondedPairsCorrected() const { return !bonds.empty() && !bondedPairs.keepsAll(); }
     // Each wall returns the fluid particles that crossed into it during the last move (call before
     // wrapping, that is before wrapPositions or sortByCell). Counts per wall, in the list's order.
     WallCounters applyWalls();
@@ -98,6 +111,7 @@ private:
     PairKernel pairKernel_ = nullptr;
     std::vector<DeferredCrossing> deferredCrossings_;
     std::vector<long> frozenPerWall_;
+    BondPassResult bondPass_;
     bool conservative_ = true;
     bool wallForces_ = false;  // some wall acts on the fluid with forces
     bool initialised_ = false;

@@ -65,6 +65,7 @@ Snapshot snapshotOf(const System& sys) {
     for (int k = 0; k < sys.species.size(); ++k) s.speciesFrozen.push_back(sys.species[k].frozen);
     s.time = sys.time;
     s.step = sys.step;
+    s.bonds = sys.bonds.bonds();
     return s;
 }
 
@@ -96,6 +97,9 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
         << "Walls          : " << sys.walls.size() << "\n";
     printWalls(log, sys);
     for (const std::string& note : pairNotes) log << "Pair mixed     : " << note << "\n";
+    if (!sys.bonds.empty())
+        log << "Bonds          : " << sys.bonds.size() << " in " << sys.bonds.chainCount() << " chains, "
+            << sys.bondPotential->description() << "; " << sys.bondedPairs.description() << "\n";
     log << "Body force     : " << (sys.bodyForce->active() ? vectorText(sys.bodyForce->value()) : std::string("none")) << "\n"
         << "Sampling       : " << nFunctions << " function object(s)\n\n";
 }
@@ -144,6 +148,7 @@ private:
         std::int64_t stepsAtReport = 0;
         for (std::int64_t k = 1; k <= nSteps; ++k) {
             interval.accumulate(integrator.step(sys));
+            if (!sys.bondPass().ok()) stopOnBrokenBond(sys);
             functions.execute(sys);
             const bool report = k % control.reportIntervalSteps == 0 || k == nSteps;
             const bool writeNow = (sys.step - firstStep) % control.writeIntervalSteps == 0 || k == nSteps;
@@ -184,6 +189,9 @@ private:
                      << " crossed " << (w < walls.crossed.size() ? walls.crossed[w] : 0) << ";";
             log_ << " left inside after a step " << walls.insideAfter << "; inside walls now " << m.insideWalls << "\n";
         }
+        if (!sys.bonds.empty())  // how near the springs are to their limit (the last step's longest bond)
+            log_ << "    bonds: longest " << std::setprecision(4) << std::sqrt(sys.bondPass().longest2) << " of rMax "
+                 << sys.bondPotential->maxLength() << "\n";
         log_ << "    ExecutionTime = " << std::setprecision(5) << elapsed << " s   steps/s = " << std::setprecision(4)
              << stepsPerSecond << "   particle-steps/s = " << std::setprecision(4)
              << stepsPerSecond * sys.particles.size() << "   time left = " << clockText(stepsLeft / stepsPerSecond)
@@ -201,6 +209,11 @@ private:
             problem = std::to_string(m.insideWalls) + " particles found inside walls (allowed: " +
                       std::to_string(model.stability.maxInsideWalls) + ")";
         if (problem.empty()) return;
+        stopUnstable(sys, problem);
+    }
+
+    // Keeps the last good state (written unless it already is) and stops the run.
+    [[noreturn]] void stopUnstable(const System& sys, const std::string& problem) {
         const std::string dir = (fs::path(caseDir_) / timeName(lastGood_.time)).string();
         // Only the particles: the sampling of that time, if it was written, stays as it was.
         if (!fs::exists(fs::path(dir) / "particles.h5"))
@@ -208,6 +221,18 @@ private:
         throw InstabilityError("the run went unstable at time " + timeName(sys.time) + " (step " +
                                std::to_string(sys.step) + "): " + problem + ". The last good state, time " +
                                timeName(lastGood_.time) + ", is written to " + dir);
+    }
+
+    // A bond at or beyond the spring's length has no force and cannot be followed: stop at once.
+    void stopOnBrokenBond(const System& sys) {
+        const BondPassResult& pass = sys.bondPass();
+        const Bonds& b = sys.bonds.bonds();
+        const auto k = static_cast<std::size_t>(pass.broken);
+        std::ostringstream problem;
+        problem << "the bond between particles " << b.first[k] << " and " << b.second[k] << " (chain " << b.chain[k]
+                << ") is " << pass.brokenLength << " long, not shorter than the spring's maximum "
+                << sys.bondPotential->maxLength() << " (overstretched: is deltaT too large or the flow too strong?)";
+        stopUnstable(sys, problem.str());
     }
 
     // Writes the state just checked (lastGood_) and the function objects' data, as one directory.
