@@ -29,6 +29,7 @@ EOD
     cat > "$c/system/controlDict" <<EOD
 $header
 endTime 10; deltaT 0.02; writeInterval 250; reportInterval 250;
+functions { chains { type chainStatistics; flowAxis x; startTime 1; sampleInterval 10; samplesPerBlock 10; axis x; nBins 6; } }
 EOD
     "$bin/blockFrozenWall" -case "$c" > "$c/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall: $(tail -3 "$c/log.blockFrozenWall")"
     "$bin/insertChains" -case "$c" > "$c/log.insertChains" 2>&1 || fail "insertChains: $(tail -3 "$c/log.insertChains")"
@@ -51,6 +52,11 @@ run "$work/restarted" 2 a
 "$bin/dpdDictionary" "$work/restarted/system/controlDict" -entry startFrom -set latestTime > /dev/null
 run "$work/restarted" 1 b
 cmp -s "$one/10/particles.h5" "$work/restarted/10/particles.h5" || fail "the run restarted at 5 differs from the uninterrupted one"
+cmp -s "$one/10/chains/chains.h5" "$work/restarted/10/chains/chains.h5" || fail "the restarted chain statistics differ"
+for table in chainStatistics chainBins; do
+    cmp -s "$one/postProcessing/chains/10/$table.dat" "$work/restarted/postProcessing/chains/10/$table.dat" || fail "the restarted $table.dat differs"
+done
+grep -q "^# mean Rg2 " "$one/postProcessing/chains/10/chainStatistics.dat" || fail "chainStatistics.dat has no mean of R_g^2"
 /usr/bin/python3 - "$one/10/particles.h5" <<'PY' || fail "h5py cannot read the bonds"
 import sys, h5py, numpy as np
 f = h5py.File(sys.argv[1])
