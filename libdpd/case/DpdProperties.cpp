@@ -272,6 +272,10 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
         for (int a = 0; a < 3; ++a)
             if (sys.box.isActiveAxis(a) && (w->point[a] < sys.box.lo[a] || w->point[a] > sys.box.hi[a]))
                 throw IoError("constant/dpdProperties: wall '" + w->name + "' has its point outside the box of " + snapshotFile);
+    for (std::size_t w = 0; w < model.walls.size(); ++w) {
+        const std::string why = model.walls[w].unfitFor(sys.box);
+        if (!why.empty()) throw IoError("constant/dpdProperties: wall '" + model.walls[w].name() + "' does not fit the box of " + snapshotFile + ": " + why);
+    }
     const std::string thin = model.walls.thinWall(sys.box, model.cutoff);
     if (!thin.empty())
         throw IoError("constant/dpdProperties: the solid behind wall '" + thin + "' is thinner than one cutoff inside the box of " +

@@ -1,6 +1,7 @@
 // A planar wall read from its sub-dictionary of constant/dpdProperties' walls block.
 #include "io/Dictionary.hpp"
 #include "walls/PlanarWall.hpp"
+#include "walls/StripedTunableSlipWall.hpp"
 #include "walls/TunableSlipWall.hpp"
 #include "walls/WallTypes.hpp"
 
@@ -11,9 +12,25 @@ namespace dpd {
 
 namespace {
 
+// stripes { axis x; period 10; gasFraction 0.5; gammaGas 0.1; offset 0; } (docs/walls.md 3.6): the
+// axis lies in the wall's plane.
+TunableSlipStripes readStripes(const Dictionary& sd, const PlanarWallSettings& w, int dimension) {
+    sd.checkKeys({"axis", "period", "gasFraction", "gammaGas", "offset"});
+    TunableSlipStripes s;
+    s.axis = sd.getAxis("axis");
+    if (dimension == 2 && s.axis == 1) sd.fail("axis", "a 2-D scene has no y axis");
+    if (std::abs(w.normal[s.axis]) > 1e-12) sd.fail("axis", "must lie in the wall's plane (across the stripes)");
+    s.period = sd.getPositive<double>("period");
+    s.gasFraction = sd.get<double>("gasFraction");
+    if (!(s.gasFraction >= 0.0 && s.gasFraction <= 1.0)) sd.fail("gasFraction", "must lie in [0, 1]");
+    s.gammaGas = sd.getNonNegative<double>("gammaGas");
+    s.offset = sd.getOrDefault<double>("offset", 0.0);
+    return s;
+}
+
 // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed.
 TunableSlipParameters readTunableSlip(const Dictionary& td) {
-    td.checkKeys({"gammaL", "zc", "epsilon", "sigma"});
+    td.checkKeys({"gammaL", "zc", "epsilon", "sigma", "stripes"});
     TunableSlipParameters t;
     t.gammaL = td.getNonNegative<double>("gammaL");
     t.zc = td.getPositive<double>("zc");
@@ -38,6 +55,10 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
         if (!wd.isDict("tunableSlip")) wd.fail("tunableSlip", "expected { gammaL ...; zc ...; epsilon ...; sigma ...; }");
         w.hasTunableSlip = true;
         w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"));
+        if (wd.subDict("tunableSlip").found("stripes")) {
+            w.hasStripes = true;
+            w.stripes = readStripes(wd.subDict("tunableSlip").subDict("stripes"), w, c.dimension);
+        }
     }
     // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
     // since it adds no tangential friction of its own to the slip that gammaL sets.
@@ -56,6 +77,7 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
 }  // namespace
 
 std::unique_ptr<Wall> makePlanarWall(PlanarWallSettings settings, std::size_t index) {
+    if (settings.hasStripes) return std::make_unique<StripedTunableSlipWall>(std::move(settings), index);
     if (settings.hasTunableSlip) return std::make_unique<TunableSlipWall>(std::move(settings), index);
     return std::make_unique<PlanarWall>(std::move(settings));
 }

@@ -25,6 +25,9 @@ struct PlanarWallSettings {
     // place of frozen particles; the reflection rule stays as a safety net behind its WCA repulsion.
     bool hasTunableSlip = false;
     TunableSlipParameters tunableSlip;
+    // Striped: gamma_L of the gas sectors, where it differs from tunableSlip.gammaL (the other sectors).
+    bool hasStripes = false;
+    TunableSlipStripes stripes;
 
     // Positive on the fluid side, negative inside the solid.
     double signedDistance(double x, double y, double z) const {

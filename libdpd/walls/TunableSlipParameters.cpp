@@ -43,4 +43,10 @@ double predictedTunableSlipLength(double gammaL, double zc, double rho, double e
     return zc * (2.0 / alpha - 7.0 / 15.0 - 19.0 * alpha / 1800.0);
 }
 
+bool TunableSlipStripes::isGas(double coordinate) const {
+    double phase = std::fmod(coordinate - offset, period);
+    if (phase < 0.0) phase += period;
+    return phase < gasFraction * period;
+}
+
 }  // namespace dpd

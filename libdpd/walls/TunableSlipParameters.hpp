@@ -33,6 +33,19 @@ struct TunableSlipParameters {
                           double kT, double dt) const;
 };
 
+// Stripes of a tunable-slip wall (docs/walls.md 3.6): along `axis` (in the wall's plane, across the
+// stripes) each period holds a gas sector of width gasFraction x period, starting at `offset`, whose
+// friction is gammaGas; the rest keeps the wall's gammaL.
+struct TunableSlipStripes {
+    int axis = 0;
+    double period = 1.0;
+    double gasFraction = 0.5;
+    double gammaGas = 0.0;
+    double offset = 0.0;
+    // Whether a coordinate along the axis lies in a gas sector.
+    bool isGas(double coordinate) const;
+};
+
 // The random-number stream of tunable-slip wall k (RandomStream kStreamTunableSlip in its low byte,
 // the wall's index above it): two walls that both reach a particle draw independent numbers.
 std::uint32_t tunableSlipStream(std::size_t wallIndex);

@@ -28,13 +28,15 @@ void TunableSlipWall::addForces(WallStep& s) const {
             if (s.frozenOfSpecies[p.species[i]]) continue;
             const double z = w.signedDistance(p.rx[i], p.ry[i], p.rz[i]);
             if (!(z > 0.0) || z >= reach) continue;
+            TunableSlipParameters here = ts;
+            here.gammaL = frictionAt(p.rx[i], p.ry[i], p.rz[i]);
             const Eigen::Vector3d v = Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]) - w.velocity;
             Eigen::Vector3d xi = Eigen::Vector3d::Zero();
             if (ts.frictionWeight(z) > 0.0) {
                 const auto g = s.random.particleGaussians(s.step, p.id[i], stream_);
                 xi = Eigen::Vector3d(g[0], threeD ? g[1] : 0.0, g[2]);
             }
-            const Eigen::Vector3d f = ts.force(z, w.normal, v, xi, s.kT, s.dt);
+            const Eigen::Vector3d f = here.force(z, w.normal, v, xi, s.kT, s.dt);
             p.fx[i] += f.x();
             if (threeD) p.fy[i] += f.y();
             p.fz[i] += f.z();

@@ -16,6 +16,10 @@ public:
     // the WCA range). Particles behind the plane feel nothing: the reflection rule returns them.
     void addForces(WallStep& s) const override;
 
+protected:
+    // The friction gamma_L in front of the wall at a point (the same everywhere on a plain wall).
+    virtual double frictionAt(double /*x*/, double /*y*/, double /*z*/) const { return settings().tunableSlip.gammaL; }
+
 private:
     std::uint32_t stream_;
 };

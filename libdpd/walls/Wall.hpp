@@ -58,6 +58,9 @@ public:
     bool isInsideSolid(const Eigen::Vector3d& r) const { return signedDistance(r) < 0.0; }
     // The plane of a planar wall (post-processing fits channels between them); null for other shapes.
     virtual const PlanarWallSettings* plane() const { return nullptr; }
+    // Why the wall cannot stand in this box (empty when it can), e.g. stripes whose period does not
+    // divide the box: checked when a run is built.
+    virtual std::string unfitFor(const Box&) const { return {}; }
     // Marks the axes along which the wall makes the mean flow vary (the run monitor's local flow).
     virtual void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const = 0;
 
