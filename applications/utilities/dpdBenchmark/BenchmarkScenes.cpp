@@ -2,6 +2,7 @@
 
 #include "io/Dictionary.hpp"
 #include "case/DpdProperties.hpp"
+#include "setup/ChainedFluid.hpp"
 #include "setup/StandardFluid.hpp"
 #include "setup/BlockFrozenWall.hpp"
 
@@ -16,6 +17,15 @@ BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension) {
     fluid.a = a;
     fluid.dimension = dimension;
     return {"fluid", makeStandardFluid(fluid), FunctionObjects(), -1};
+}
+
+BenchmarkScene makeChainsScene(std::size_t particles, double a) {
+    ChainedFluidSettings s;
+    s.fluid.particles = particles;
+    s.fluid.a = a;
+    s.length = 30;
+    s.chains = std::max<long>(1, static_cast<long>(particles / 10 / 30));  // 10 % of the particles
+    return {"chains", makeChainedFluid(s), FunctionObjects(), -1};
 }
 
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-// The scenes dpdBenchmark times: the standard DPD fluid in a periodic box, and a channel between
+// The scenes dpdBenchmark times: the standard DPD fluid in a periodic box, the same with chains, and a channel between
 // frozen fcc walls with bounce-back (the set-up of tutorials/channel/poiseuille, scaled to the
 // particle count), sampled every step by a binned profile as a run would be.
 #include "system/System.hpp"
@@ -19,6 +19,10 @@ struct BenchmarkScene {
 // The standard fluid: rho 3, a (25 by default; 0 drops the conservative term), gamma 4.5, kT 1,
 // dt 0.04, about `particles` particles.
 BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension);
+
+// The standard fluid with 10 % of its particles in chains of 30 beads (FENE, H 6, r_max 3): what
+// bonds cost.
+BenchmarkScene makeChainsScene(std::size_t particles, double a);
 
 // The channel: walls at z = -10 and 10 with one cutoff of frozen fcc lattice behind each, rho 4,
 // a 18.75, gamma 4.5, body force 0.02 along x, bounce-back, dt 0.04, a square cross-section sized

@@ -43,8 +43,8 @@ std::vector<std::string> parseScenes(const std::string& text) {
     std::stringstream in(text);
     std::string item;
     while (std::getline(in, item, ','))
-        if (item == "fluid" || item == "channel") scenes.push_back(item);
-        else throw std::invalid_argument("-scenes: unknown scene '" + item + "' (expected fluid or channel)");
+        if (item == "fluid" || item == "channel" || item == "chains") scenes.push_back(item);
+        else throw std::invalid_argument("-scenes: unknown scene '" + item + "' (expected fluid, chains or channel)");
     return scenes;
 }
 
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
             ("particles,n", po::value<std::string>(&particles)->default_value("32000,256000"),
              "particle counts, comma-separated (e.g. 32000,256000,1000000)")
             ("threads", po::value<std::string>(&threads)->default_value("1,2"), "OpenMP thread counts, comma-separated")
-            ("scenes", po::value<std::string>(&scenes)->default_value("fluid,channel"), "fluid and/or channel")
+            ("scenes", po::value<std::string>(&scenes)->default_value("fluid,channel"), "fluid, chains (the fluid with 10 % of it in chains of 30) and/or channel")
             ("steps", po::value<int>(&settings.steps)->default_value(100), "steps per timed segment")
             ("segments", po::value<int>(&settings.segments)->default_value(3), "timed segments (the best counts)")
             ("warmup", po::value<int>(&settings.warmup)->default_value(10), "untimed steps first")
@@ -114,7 +114,9 @@ int main(int argc, char** argv) {
         for (const std::string& name : sceneNames)
             for (std::size_t n : counts) {
                 const dpd::BenchmarkScene scene =
-                    name == "fluid" ? dpd::makeFluidScene(n, a, dimension) : dpd::makeChannelScene(n);
+                    name == "fluid"    ? dpd::makeFluidScene(n, a, dimension)
+                    : name == "chains" ? dpd::makeChainsScene(n, a)
+                                       : dpd::makeChannelScene(n);
                 for (int t : threadCounts) {
                     const std::string row = tableRow(dpd::timeScene(scene, t, settings));
                     std::cout << row << std::flush;
