@@ -170,7 +170,10 @@ TEST(IntegratorStabilityIdealGas, ShardlowIsExactAtLargeStepsWithoutConservative
         const TemperatureProbeResult r = probeTemperature(sys, *integrator, probe);
         ASSERT_FALSE(r.unstable) << r.problem;
         std::printf("    %s: <kT> - 1 = %+.4f +- %.4f\n", type.c_str(), r.kT - 1.0, r.standardError);
-        if (type == "Shardlow") EXPECT_LT(std::abs(r.kT - 1.0), 4.0 * r.standardError);
-        else EXPECT_GT(std::abs(r.kT - 1.0), 4.0 * r.standardError);
+        // The SE within a budget of 0.003 (derived ~0.0016, measured spread over seeds 0.0024), then fixed
+        // bounds of 4 budgets: Shardlow within 0.012 of 1, Groot-Warren beyond it.
+        EXPECT_TRUE(r.standardError <= 0.003) << "too noisy to decide: " << r.standardError;
+        if (type == "Shardlow") EXPECT_TRUE(std::abs(r.kT - 1.0) <= 0.012) << r.kT;
+        else EXPECT_TRUE(std::abs(r.kT - 1.0) > 0.012) << r.kT;
     }
 }

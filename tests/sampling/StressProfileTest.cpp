@@ -141,8 +141,10 @@ Estimate blockMeanOverBins(const BinAccumulator& acc, double crossSection, doubl
 // 23.637(2) and 23.635(2); the improved equation of state of Liyana-Arachchi et al. 2015 gives 23.59).
 // The measured kT differs from 1 by the integrator's small bias; the kinetic part rho (kT - 1) is
 // added to the reference, and as much again allowed for the virial's weaker temperature dependence.
-// Accept 4 standard errors of the measurement (10 blocks of 300 steps, each much longer than the
-// pressure's correlation time of a few tens of steps) plus those allowances.
+// The standard error (10 blocks of 300 steps, each much longer than the pressure's correlation time of
+// a few tens of steps; measured 0.016) must be within a budget of 0.025; then the pressure must lie
+// within 4 budgets (0.1, 0.4 %) of the reference plus those allowances. A conservative force 10 %
+// too strong moves the pressure by ~2.2 (its virial part).
 // Groot and Warren's p = rho kT + 0.101 a rho^2 is printed beside it: a fit meant for rho > 2 that,
 // at rho = 3, is 9 % above the accurate value (it tends to the data only at higher density).
 TEST(StressProfile, EquilibriumPressureMatchesTheReferenceEquationOfState) {
@@ -165,7 +167,8 @@ TEST(StressProfile, EquilibriumPressureMatchesTheReferenceEquationOfState) {
     std::printf("    rho %.4f, kT %.4f: pressure %.4f +- %.4f; reference %.4f; Groot-Warren alpha = 0.101: %.4f\n", rho,
                 kT.mean, p.mean, p.error, reference, grootWarren);
     EXPECT_GT(p.error, 0.0);
-    EXPECT_NEAR(p.mean, reference, 4.0 * p.error + 0.002 + rho * std::abs(kT.mean - 1.0));
+    EXPECT_TRUE(p.error <= 0.025) << "too noisy to decide: " << p.error;
+    EXPECT_TRUE(std::abs(p.mean - reference) <= 4.0 * 0.025 + 0.002 + rho * std::abs(kT.mean - 1.0)) << p.mean;
 }
 
 // Periodic (reverse) Poiseuille flow in a 5 x 5 x 10 box, rho = 3, body force +g x on z in [0, 5) and
@@ -176,7 +179,9 @@ TEST(StressProfile, EquilibriumPressureMatchesTheReferenceEquationOfState) {
 // Equilibration 3000 steps (t = 60, seven times the slowest relaxation time (L / 2 pi)^2 / nu = 8.7);
 // sampling every 5 steps for 6000 steps in 12 blocks of 500 steps (each several relaxation times of
 // the stress). Accept: chi^2 of the 20 bins against the exact line below 20 + 4 sqrt(40) = 45; the
-// amplitude k of the best fit sigma = k sigma_exact within 4 of its standard errors of 1.
+// amplitude k of the best fit sigma = k sigma_exact has a standard error within a budget of 0.02
+// (measured 0.0147: bins' errors too large to decide fail here, they would pass the chi^2), and lies
+// within 4 budgets of 1 (measured 0.969). A halved body force halves k.
 TEST(StressProfile, PeriodicPoiseuilleShearStressBalancesTheBodyForce) {
     System channel;
     channel.box.hi = Eigen::Vector3d(5, 5, 10);
@@ -216,6 +221,7 @@ TEST(StressProfile, PeriodicPoiseuilleShearStressBalancesTheBodyForce) {
     }
     const double k = sxy / sxx, kErr = 1.0 / std::sqrt(sxx);
     std::printf("    chi2 %.2f over 20 bins; amplitude %.4f +- %.4f of the exact one\n", chi2, k, kErr);
-    EXPECT_LT(chi2, 20.0 + 4.0 * std::sqrt(40.0));
-    EXPECT_NEAR(k, 1.0, 4.0 * kErr);
+    EXPECT_TRUE(chi2 < 20.0 + 4.0 * std::sqrt(40.0)) << chi2;
+    EXPECT_TRUE(kErr <= 0.02) << "too noisy to decide: " << kErr;
+    EXPECT_TRUE(std::abs(k - 1.0) <= 4.0 * 0.02) << k;
 }
