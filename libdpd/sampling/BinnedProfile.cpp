@@ -51,6 +51,8 @@ std::unique_ptr<FunctionObject> BinnedProfile::New(const Dictionary& d, const st
         const int flow = readAxis(d, sys, "flowAxis");
         if (flow == layout.axis) d.fail("flowAxis", "the flow axis must differ from the bin axis (the shear stress is sigma_flow,axis)");
         f->accumulator_.setStressFlowAxis(flow);
+        if (sys.bondedPairsCorrected())
+            d.fail("stress", "is not sampled with bondedPairs other than dpd all (the pair virial would count the left-out terms)");
     } else if (d.found("flowAxis")) {
         d.fail("flowAxis", "only with stress yes");
     }

@@ -14,6 +14,10 @@
 // The random force is left out: its noise zeta_ij of this step is drawn independently of the
 // positions, so its virial averages to zero exactly and would only add variance.
 //
+// Bonds count too: each spring's r_ij F_ij shared along its segment in the same way (its force is
+// conservative and exact at the sampled positions). With bondedPairs other than `dpd all` the stress
+// is refused (std::logic_error): the pair traversal would count the terms the bonded pairs leave out.
+//
 // Every interacting pair counts (fluid-wall pairs carry the wall's stress into the fluid), whatever
 // species the profile bins for its other fields. Deterministic on any number of threads: each slab
 // of cells sums into its own array, and the slabs are added in order.

@@ -5,6 +5,7 @@
 #include "forces/ReversePoiseuilleBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
+#include "setup/ChainedFluid.hpp"
 #include "setup/StandardFluid.hpp"
 #include "sampling/BinProfile.hpp"
 #include "sampling/BlockStatistics.hpp"
@@ -92,6 +93,50 @@ TEST(StressProfile, BinnedVirialSumsToTheDirectPairSum) {
             double sum = 0.0;
             for (const auto& b : binned) sum += b[m];
             EXPECT_NEAR(sum, direct[m], 1e-9 * std::abs(direct[0])) << "axis " << axis << " component " << m;
+        }
+    }
+}
+
+// With chains the springs count too: the binned sum is the direct pair sum plus, for every bond
+// b = r_second - r_first, f b b with f = -H / (1 - b^2 / r_max^2) (docs/methods.md 4), to rounding.
+TEST(StressProfile, BinnedVirialOfChainsAddsTheSprings) {
+    ChainedFluidSettings s;
+    s.fluid.particles = 600;
+    s.fluid.dt = 0.01;
+    s.chains = 6;
+    s.length = 20;
+    System sys = makeChainedFluid(s);
+    GrootWarrenIntegrator gw(0.65);
+    for (int k = 0; k < 20; ++k) gw.step(sys);
+    const Particles& p = sys.particles;
+    const Eigen::Vector3d len = sys.box.length();
+    SymmetricTensor pairs{}, springs{};
+    const DpdPairEvaluator<true, true> eval(sys.forceParameters);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = i + 1; j < p.size(); ++j) {
+            Eigen::Vector3d r(p.rx[i] - p.rx[j], p.ry[i] - p.ry[j], p.rz[i] - p.rz[j]);
+            for (int a = 0; a < 3; ++a) r[a] -= len[a] * std::round(r[a] / len[a]);
+            if (r.squaredNorm() >= 1.0) continue;
+            const Eigen::Vector3d v(p.vx[i] - p.vx[j], p.vy[i] - p.vy[j], p.vz[i] - p.vz[j]);
+            const double f = eval.forceOverR(r.squaredNorm(), r.dot(v), sys.pairs(p.species[i], p.species[j]), 0.0);
+            const double w[6] = {r.x() * r.x(), r.y() * r.y(), r.z() * r.z(), r.x() * r.y(), r.x() * r.z(), r.y() * r.z()};
+            for (int m = 0; m < 6; ++m) pairs[m] += f * w[m];
+        }
+    const Bonds& b = sys.bonds.bonds();
+    ASSERT_EQ(b.size(), 6u * 19u);
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        const Eigen::Vector3d v = b.vector(k);
+        const double f = -6.0 / (1.0 - v.squaredNorm() / 9.0);
+        const double w[6] = {v.x() * v.x(), v.y() * v.y(), v.z() * v.z(), v.x() * v.y(), v.x() * v.z(), v.y() * v.z()};
+        for (int m = 0; m < 6; ++m) springs[m] += f * w[m];
+    }
+    EXPECT_LT(springs[0], 0.0);  // springs pull: tension
+    for (int axis = 0; axis < 3; ++axis) {
+        const auto binned = binnedPairVirial(sys, layout(axis, 7, sys.box.lo[axis], sys.box.hi[axis]));
+        for (int m = 0; m < 6; ++m) {
+            double sum = 0.0;
+            for (const auto& bin : binned) sum += bin[m];
+            EXPECT_NEAR(sum, pairs[m] + springs[m], 1e-9 * std::abs(pairs[0])) << "axis " << axis << " component " << m;
         }
     }
 }
