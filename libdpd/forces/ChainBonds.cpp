@@ -44,16 +44,27 @@ void ChainBonds::locate(const Particles& p) {
         indexOfId_.assign(maxId + 1, kNowhere);
         for (std::size_t i = 0; i < n; ++i) indexOfId_[p.id[i]] = static_cast<std::uint32_t>(i);
         for (std::size_t k = 0; k < bonds_.size(); ++k)
-            for (std::uint64_t id : {bonds_.first[k], bonds_.second[k]})
+            for (std::uint64_t id : {bonds_.first[k], bonds_.second[k]}) {
                 if (id >= indexOfId_.size() || indexOfId_[id] == kNowhere)
                     throw std::invalid_argument("bonds: particle " + std::to_string(id) + " is bonded but missing");
+                const std::uint8_t species = p.species[indexOfId_[id]];
+                if (species >= bondedSpecies_.size()) bondedSpecies_.resize(species + 1, 0);
+                bondedSpecies_[species] = 1;
+            }
+        bondedSpecies_.resize(256, 0);
         return;
     }
+    // Only the particles of species that hold bonded ones: in a solution a scan of the species
+    // bytes and a few writes, instead of a write per particle (the table's other entries go stale,
+    // and are never read).
     const long count = static_cast<long>(n);
     const std::uint64_t* ids = p.id.data();
+    const std::uint8_t* species = p.species.data();
+    const std::uint8_t* bonded = bondedSpecies_.data();
     std::uint32_t* index = indexOfId_.data();
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < count; ++i) index[ids[i]] = static_cast<std::uint32_t>(i);
+    for (long i = 0; i < count; ++i)
+        if (bonded[species[i]]) index[ids[i]] = static_cast<std::uint32_t>(i);
 }
 
 }  // namespace dpd

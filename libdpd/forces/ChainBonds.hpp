@@ -41,7 +41,8 @@ public:
 private:
     Bonds bonds_;
     std::vector<std::size_t> chainStart_;    // bonds of chain c: [chainStart_[c], chainStart_[c + 1])
-    std::vector<std::uint32_t> indexOfId_;   // by particle id
+    std::vector<std::uint32_t> indexOfId_;   // by particle id (kept for the bonded species only)
+    std::vector<std::uint8_t> bondedSpecies_;  // 1 for a species holding bonded particles (256 entries)
 };
 
 }  // namespace dpd
