@@ -21,7 +21,12 @@
 // The abscissa is centred and scaled to [-1, 1] internally (a polynomial basis in x itself becomes badly
 // conditioned when the points sit far from x = 0), and the coefficients and covariance are transformed
 // back exactly, so callers always see coefficients in the original variable x.
+// GCC 12 flags Eigen's AVX-512 product kernels as maybe-uninitialized (a false positive in Eigen's
+// code, shown once libdpd is built with hidden visibility).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <Eigen/Dense>
+#pragma GCC diagnostic pop
 #include <vector>
 
 namespace dpd {
