@@ -16,18 +16,13 @@ CouetteFitResult fitCouette(const Profile1D& p, double yLow, double yHigh, doubl
     if (!(fitHigh > fitLow) || fitLow < yLow || fitHigh > yHigh)
         throw std::invalid_argument("fitCouette: the fit range [" + std::to_string(fitLow) + ", " +
                                     std::to_string(fitHigh) + "] must be a nonempty range between the walls");
-    Profile1D s;
-    for (std::size_t i = 0; i < p.y.size(); ++i) {
-        if (p.y[i] < fitLow || p.y[i] > fitHigh) continue;
-        s.y.push_back(p.y[i]);
-        s.u.push_back(p.u[i]);
-        if (!p.uErr.empty()) s.uErr.push_back(p.uErr[i]);
-    }
+    const Profile1D s = selectProfilePoints(p, [](double y) { return y; },
+                                            [&](double y) { return y >= fitLow && y <= fitHigh; });
     if (s.y.size() < 3)
         throw std::invalid_argument("fitCouette: " + std::to_string(s.y.size()) + " profile points in [" +
                                     std::to_string(fitLow) + ", " + std::to_string(fitHigh) +
                                     "], at least 3 are needed (2 coefficients + 1 degree of freedom)");
-    const PolyFitResult fit = fitPolynomial(s.y, s.u, s.uErr, 1, true);
+    const PolyFitResult fit = fitProfilePolynomial(s, 1);
     CouetteFitResult r;
     r.shearRate = fit.coefficients(1);
     r.shearRateErr = fit.standardError(1);
@@ -38,6 +33,7 @@ CouetteFitResult fitCouette(const Profile1D& p, double yLow, double yHigh, doubl
     r.dof = fit.dof;
     r.chi2PerDof = fit.dof > 0 ? fit.chi2 / fit.dof : 0.0;
     r.coefficients = {fit.coefficients(0), fit.coefficients(1)};
+    r.blockErrors = fit.blockErrors;
     return r;
 }
 

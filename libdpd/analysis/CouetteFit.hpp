@@ -9,7 +9,8 @@
 //   at both walls when the fluid lags behind them;
 //   with the shear stress profile sigma_xy(y) (uniform in steady Couette flow by momentum balance),
 //   the dynamic viscosity eta = <sigma> / (du/dy) and nu = eta / rho.
-// Errors: the line's covariance (weighted fit, scaled by the reduced chi^2), propagated to first order.
+// Errors: the line's covariance (weighted fit scaled by the reduced chi^2, or from the profile's blocks:
+// Profile1D.hpp), propagated to first order.
 #include "analysis/PoiseuilleFit.hpp"
 
 #include <vector>
@@ -23,6 +24,7 @@ struct CouetteFitResult {
     double chi2PerDof = 0.0;
     int dof = 0;
     std::vector<double> coefficients;            // c0 c1
+    BlockErrorInfo blockErrors;                  // blocks 0: errors from the points' errors alone
 };
 
 // Fits the line to the points with fitLow <= y <= fitHigh. Throws std::invalid_argument when the arrays

@@ -25,21 +25,6 @@ void checkBodyForce(double g, const char* who) {
         throw std::invalid_argument(std::string(who) + ": the body force g must be finite and nonzero");
 }
 
-// The profile points whose y passes `keep`, with y mapped by `coordinate` (identity or periodic wrap).
-// Points outside are never looked at, so garbage there (even NaN or a zero error) does not matter.
-Profile1D selectPoints(const Profile1D& p, const std::function<double(double)>& coordinate,
-                       const std::function<bool(double)>& keep) {
-    Profile1D s;
-    for (std::size_t i = 0; i < p.y.size(); ++i) {
-        const double y = coordinate(p.y[i]);
-        if (!keep(y)) continue;
-        s.y.push_back(y);
-        s.u.push_back(p.u[i]);
-        if (!p.uErr.empty()) s.uErr.push_back(p.uErr[i]);
-    }
-    return s;
-}
-
 void requireEnoughPoints(const Profile1D& s, const std::string& where) {
     if (s.y.size() < kMinPoints)
         throw std::invalid_argument(where + ": " + std::to_string(s.y.size()) +
@@ -59,9 +44,7 @@ Viscosity viscosityFromCurvature(const PolyFitResult& fit, double g, double sign
     return {sign * g / (2.0 * c2), std::abs(g / (2.0 * c2 * c2)) * fit.standardError(2)};
 }
 
-PolyFitResult fitParabola(const Profile1D& s, bool scaleByChi2) {
-    return fitPolynomial(s.y, s.u, s.uErr, 2, scaleByChi2);
-}
+PolyFitResult fitParabola(const Profile1D& s) { return fitPolynomial(s.y, s.u, s.uErr, 2, false); }
 
 // chi^2 per degree of freedom with respect to the errors as given (the fit stores the unscaled chi^2).
 double chi2PerDof(double chi2, int dof) { return dof > 0 ? chi2 / dof : 0.0; }
@@ -102,7 +85,7 @@ WallFitResult navierSlipAtWall(const PolyFitResult& fit, double yw, double uWall
     w.slipVelocity = fit.evaluate(yw) - uWall;
     w.shearRate = dShear.dot(c);
     w.slipLength = w.slipVelocity / w.shearRate;
-    const auto error = [&](const Eigen::VectorXd& grad) { return std::sqrt(grad.dot(fit.covariance * grad)); };
+    const auto error = [&](const Eigen::VectorXd& grad) { return fit.errorOf(grad); };
     w.slipVelocityErr = error(dSlip);
     w.shearRateErr = error(dShear);
     w.slipLengthErr = error((dSlip - w.slipLength * dShear) / w.shearRate);
@@ -118,9 +101,9 @@ PoiseuilleFitResult fitPoiseuille(const Profile1D& p, double g, double yLow, dou
     if (!(exclude >= 0.0)) throw std::invalid_argument("fitPoiseuille: exclude must be >= 0");
 
     const double lo = yLow + exclude, hi = yHigh - exclude;
-    const Profile1D s = selectPoints(p, [](double y) { return y; }, [&](double y) { return y >= lo && y <= hi; });
+    const Profile1D s = selectProfilePoints(p, [](double y) { return y; }, [&](double y) { return y >= lo && y <= hi; });
     requireEnoughPoints(s, "fitPoiseuille: y in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    const PolyFitResult fit = fitParabola(s, true);
+    const PolyFitResult fit = fitProfilePolynomial(s, 2);
     const Eigen::VectorXd& c = fit.coefficients;
 
     PoiseuilleFitResult r;
@@ -134,6 +117,7 @@ PoiseuilleFitResult fitPoiseuille(const Profile1D& p, double g, double yLow, dou
     r.dof = fit.dof;
     r.chi2PerDof = chi2PerDof(fit.chi2, fit.dof);
     r.coefficients = {c(0), c(1), c(2)};
+    r.blockErrors = fit.blockErrors;
     return r;
 }
 
@@ -155,15 +139,15 @@ ReversePoiseuilleResult fitReversePoiseuille(const Profile1D& p, double g, doubl
     };
     const auto inFirst = [&](double s) { return s < half && s >= exclude && half - s >= exclude; };
     const auto inSecond = [&](double s) { return s >= half && s - half >= exclude && length - s >= exclude; };
-    const Profile1D first = selectPoints(p, wrap, inFirst);
-    const Profile1D second = selectPoints(p, wrap, inSecond);
+    const Profile1D first = selectProfilePoints(p, wrap, inFirst);
+    const Profile1D second = selectProfilePoints(p, wrap, inSecond);
     requireEnoughPoints(first, "fitReversePoiseuille: first half (force +g)");
     requireEnoughPoints(second, "fitReversePoiseuille: second half (force -g)");
 
     // Both halves share one noise model, so the scatter factor (reduced chi^2) is estimated once from both
     // together: scaling each half by its own, noisier, chi^2 would feed that noise into the weights of the
     // combination and make the combined error too small (it then covers the truth clearly less than 68%).
-    const PolyFitResult fit1 = fitParabola(first, false), fit2 = fitParabola(second, false);
+    const PolyFitResult fit1 = fitParabola(first), fit2 = fitParabola(second);
     const int dof = fit1.dof + fit2.dof;
     const double scatter = std::sqrt((fit1.chi2 + fit2.chi2) / dof);
     const Viscosity nu1 = scaled(viscosityFromCurvature(fit1, g, -1.0), scatter);

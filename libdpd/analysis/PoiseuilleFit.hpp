@@ -12,18 +12,14 @@
 //
 // Uncertainties: all derived quantities are smooth functions f(c) of the fitted coefficients c = (c0, c1,
 // c2). Linear error propagation (delta method) gives var f = grad f^T C grad f, with C the covariance of
-// the coefficients from the weighted fit, scaled by the reduced chi^2 (see WeightedPolyFit.hpp) so that
-// it reflects the scatter actually seen in the profile. This is accurate while the relative errors are
+// the coefficients: from the weighted fit scaled by the reduced chi^2, or, when the profile carries its
+// blocks, propagated from the blocks' covariance of the bins (Profile1D.hpp). This is accurate while the relative errors are
 // small (the quantities are ratios, so their distributions become skewed when they are not).
+#include "analysis/Profile1D.hpp"
+
 #include <vector>
 
 namespace dpd {
-
-struct Profile1D {
-    std::vector<double> y;     // bin centres (wall-normal coordinate)
-    std::vector<double> u;     // mean velocity along the flow
-    std::vector<double> uErr;  // its standard error; empty or all zero = unknown (unit weights)
-};
 
 struct WallFitResult {
     double position = 0.0;         // y of the wall
@@ -36,7 +32,6 @@ struct WallFitResult {
     double shearRateErr = 0.0;
 };
 
-struct PolyFitResult;
 // Navier slip at the wall y = yw of a fitted polynomial profile (any degree), with inward normal
 // +1 (lower wall) or -1 (upper wall), and delta-method errors from the fit's covariance.
 WallFitResult navierSlipAtWall(const PolyFitResult& fit, double yw, double uWall, double inwardNormal);
@@ -50,6 +45,7 @@ struct PoiseuilleFitResult {
     double chi2PerDof = 0.0;   // with the given errors; about 1 when they are right and the flow is parabolic
     int dof = 0;
     std::vector<double> coefficients;  // c0 c1 c2
+    BlockErrorInfo blockErrors;        // blocks 0: errors from the points' errors alone
 };
 
 // Fits a parabola to the points with yLow + exclude <= y <= yHigh - exclude (exclude drops the layers next
@@ -74,7 +70,7 @@ struct ReversePoiseuilleResult {
 // scaled by one reduced chi^2 pooled over both halves (they share the noise model; a per-half scale would be
 // noisier and would bias the inverse-variance weights of the combination). Throws
 // std::invalid_argument for g zero or not finite, length <= 0, exclude outside [0, L/4), or fewer than 4
-// points in either half.
+// points in either half. The profile's blocks are not used: the points are taken as independent.
 ReversePoiseuilleResult fitReversePoiseuille(const Profile1D& p, double g, double yLo, double length,
                                              double exclude = 1.0);
 

@@ -1,5 +1,7 @@
 #include "analysis/WeightedPolyFit.hpp"
 
+#include "analysis/CorrelatedMean.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -94,7 +96,17 @@ double PolyFitResult::reducedChi2() const {
 
 double PolyFitResult::evaluate(double x) const { return evaluatePolynomial(coefficients, x); }
 
-double PolyFitResult::standardError(int k) const { return std::sqrt(covariance(k, k)); }
+double PolyFitResult::standardError(int k) const {
+    return errorOf(Eigen::VectorXd::Unit(coefficients.size(), k));
+}
+
+double PolyFitResult::errorOf(const Eigen::VectorXd& grad) const {
+    if (blockCoefficients.empty()) return std::sqrt(grad.dot(covariance * grad));
+    std::vector<Eigen::VectorXd> series;
+    series.reserve(blockCoefficients.size());
+    for (const Eigen::VectorXd& c : blockCoefficients) series.push_back(Eigen::VectorXd::Constant(1, grad.dot(c)));
+    return std::sqrt(correlatedMean(series).covariance(0, 0) * blockScale);
+}
 
 double evaluatePolynomial(const Eigen::VectorXd& coefficients, double x) {
     double p = 0.0;
@@ -102,13 +114,27 @@ double evaluatePolynomial(const Eigen::VectorXd& coefficients, double x) {
     return p;
 }
 
-PolyFitResult fitPolynomial(const std::vector<double>& x, const std::vector<double>& y,
-                            const std::vector<double>& yErr, int degree, bool scaleByChi2) {
+namespace {
+
+// The weighted problem in the scaled abscissa: coefficients, (A^T A)^-1 and the map from y to the
+// coefficients, all in t = (x - centre) / halfWidth.
+struct ScaledFit {
+    AbscissaScaling scaling;
+    Eigen::VectorXd coefficients;
+    Eigen::MatrixXd inverseNormal;  // (A^T A)^-1, A the weighted design matrix
+    Eigen::MatrixXd map;            // coefficients = map y
+    double chi2 = 0.0;
+    int dof = 0;
+    bool unitWeights = false;
+};
+
+ScaledFit solveScaled(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& yErr,
+                      int degree) {
     checkInputs(x, y, degree);
-    PolyFitResult r;
-    const std::vector<double> sqrtW = sqrtWeights(yErr, x.size(), r.unitWeights);
-    const AbscissaScaling scaling = scalingFor(x);
-    const Eigen::MatrixXd a = weightedDesignMatrix(x, sqrtW, degree, scaling);
+    ScaledFit f;
+    const std::vector<double> sqrtW = sqrtWeights(yErr, x.size(), f.unitWeights);
+    f.scaling = scalingFor(x);
+    const Eigen::MatrixXd a = weightedDesignMatrix(x, sqrtW, degree, f.scaling);
     Eigen::VectorXd b(a.rows());
     for (Eigen::Index i = 0; i < b.size(); ++i) b(i) = sqrtW[i] * y[i];
 
@@ -120,24 +146,62 @@ PolyFitResult fitPolynomial(const std::vector<double>& x, const std::vector<doub
         throw std::invalid_argument("fitPolynomial: the points do not determine a polynomial of degree " +
                                     std::to_string(degree) + " (fewer than " + std::to_string(nCoeff) +
                                     " distinct abscissae)");
-    const Eigen::VectorXd coeffScaled = qr.solve(b);
+    f.coefficients = qr.solve(b);
 
     // A P = Q R, hence (A^T A)^-1 = P R^-1 R^-T P^T.
     const Eigen::MatrixXd r0 = qr.matrixR().topLeftCorner(nCoeff, nCoeff).triangularView<Eigen::Upper>();
     const Eigen::MatrixXd rInv =
         r0.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(nCoeff, nCoeff));
-    Eigen::MatrixXd covScaled = qr.colsPermutation() * (rInv * rInv.transpose()) * qr.colsPermutation().transpose();
+    f.inverseNormal = qr.colsPermutation() * (rInv * rInv.transpose()) * qr.colsPermutation().transpose();
+    f.map = f.inverseNormal * a.transpose() * Eigen::Map<const Eigen::VectorXd>(sqrtW.data(), a.rows()).asDiagonal();
 
-    r.chi2 = (a * coeffScaled - b).squaredNorm();
-    r.dof = static_cast<int>(x.size()) - nCoeff;
-    if (scaleByChi2 && r.dof > 0) {
-        covScaled *= r.chi2 / r.dof;
-        r.covarianceScaled = true;
-    }
+    f.chi2 = (a * f.coefficients - b).squaredNorm();
+    f.dof = static_cast<int>(x.size()) - nCoeff;
+    return f;
+}
 
-    const Eigen::MatrixXd t = toOriginalVariable(degree, scaling);
-    r.coefficients = t * coeffScaled;
+// The result in the original variable, from the covariance of the scaled coefficients.
+PolyFitResult inOriginalVariable(const ScaledFit& f, int degree, const Eigen::MatrixXd& covScaled, bool scaled) {
+    PolyFitResult r;
+    r.chi2 = f.chi2;
+    r.dof = f.dof;
+    r.unitWeights = f.unitWeights;
+    r.covarianceScaled = scaled;
+    const Eigen::MatrixXd t = toOriginalVariable(degree, f.scaling);
+    r.coefficients = t * f.coefficients;
     r.covariance = t * covScaled * t.transpose();
+    return r;
+}
+
+}  // namespace
+
+PolyFitResult fitPolynomial(const std::vector<double>& x, const std::vector<double>& y,
+                            const std::vector<double>& yErr, int degree, bool scaleByChi2) {
+    const ScaledFit f = solveScaled(x, y, yErr, degree);
+    const bool scale = scaleByChi2 && f.dof > 0;
+    return inOriginalVariable(f, degree, scale ? Eigen::MatrixXd(f.inverseNormal * (f.chi2 / f.dof)) : f.inverseNormal,
+                              scale);
+}
+
+PolyFitResult fitPolynomial(const std::vector<double>& x, const std::vector<double>& y,
+                            const std::vector<double>& yErr, int degree,
+                            const std::vector<std::vector<double>>& blocks) {
+    const ScaledFit f = solveScaled(x, y, yErr, degree);
+    std::vector<Eigen::VectorXd> coefficients;
+    for (const auto& block : blocks) {
+        if (block.size() != x.size())
+            throw std::invalid_argument("fitPolynomial: a block has " + std::to_string(block.size()) + " values for " +
+                                        std::to_string(x.size()) + " points");
+        coefficients.push_back(f.map * Eigen::Map<const Eigen::VectorXd>(block.data(), f.map.cols()));
+    }
+    const CorrelatedMean c = correlatedMean(coefficients);
+    const bool scale = f.dof > 0 && f.chi2 > f.dof;
+    PolyFitResult r = inOriginalVariable(f, degree, scale ? Eigen::MatrixXd(c.covariance * (f.chi2 / f.dof)) : c.covariance,
+                                         scale);
+    r.blockErrors = {static_cast<int>(blocks.size()), c.window, c.maxTau, c.windowFound};
+    const Eigen::MatrixXd t = toOriginalVariable(degree, f.scaling);
+    for (const Eigen::VectorXd& q : coefficients) r.blockCoefficients.push_back(t * q);
+    r.blockScale = scale ? f.chi2 / f.dof : 1.0;
     return r;
 }
 

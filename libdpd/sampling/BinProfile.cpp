@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace dpd {
 
@@ -89,6 +90,14 @@ StressPoint stressProfilePoint(const BinAccumulator& acc, int b, const std::vect
     return s;
 }
 
+// The blocks that ran their full length: a partial block has a different variance.
+std::vector<std::size_t> completeBlocks(const BinAccumulator& acc) {
+    std::vector<std::size_t> complete;
+    for (std::size_t k = 0; k < acc.blocks().size(); ++k)
+        if (acc.samplesPerBlock()[k] == acc.blockSamples()) complete.push_back(k);
+    return complete;
+}
+
 }  // namespace
 
 std::string shearStressName(int flowAxis, int binAxis) {
@@ -103,10 +112,7 @@ BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int di
     out.samples = acc.samples();
     out.hasStress = flowAxis >= 0;
     if (out.hasStress) out.stressName = shearStressName(flowAxis, L.axis);
-    // Error bars from complete blocks only: a partial block has a different variance.
-    std::vector<std::size_t> complete;
-    for (std::size_t k = 0; k < acc.blocks().size(); ++k)
-        if (acc.samplesPerBlock()[k] == acc.blockSamples()) complete.push_back(k);
+    const std::vector<std::size_t> complete = completeBlocks(acc);
     out.blocksForErrors = complete.size() >= 2 ? static_cast<int>(complete.size()) : 0;
     for (int b = 0; b < L.binCount(); ++b) {
         BinSums total;
@@ -134,6 +140,17 @@ BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int di
                                                                    binMeasure, dimension, flowAxis));
     }
     return out;
+}
+
+std::vector<std::vector<double>> blockVelocities(const BinAccumulator& acc, int component) {
+    std::vector<std::vector<double>> blocks;
+    for (std::size_t k : completeBlocks(acc)) {
+        std::vector<double> u;
+        for (const BinSums& b : acc.blocks()[k])
+            u.push_back(usableBin(b.s[0]) ? b.s[1 + component] / b.s[0] : std::numeric_limits<double>::quiet_NaN());
+        blocks.push_back(std::move(u));
+    }
+    return blocks;
 }
 
 }  // namespace dpd

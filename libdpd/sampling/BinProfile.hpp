@@ -50,4 +50,9 @@ std::string shearStressName(int flowAxis, int binAxis);
 // components count in the temperature (x and z in 2-D).
 BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int dimension);
 
+// The mean velocity component `component` of every bin in each complete block (NaN where the block saw
+// too few samples in the bin): the profile block by block, for fits that need the covariance of the
+// bins (analysis/Profile1D.hpp).
+std::vector<std::vector<double>> blockVelocities(const BinAccumulator& acc, int component);
+
 }  // namespace dpd

@@ -64,7 +64,7 @@ ViscosityProbeResult probeViscosity(const System& fluid, Integrator& integrator,
     const double crossSection = sys.box.dimension == 3 ? len.x() * len.y() : len.x();
     const BinProfile p = computeProfile(profile, crossSection, sys.box.dimension);
     const ReversePoiseuilleResult fit =
-        fitReversePoiseuille(Profile1D{p.centre, p.ux, p.uxErr}, s.g, layout.lo, len[kGradientAxis], s.exclude);
+        fitReversePoiseuille(Profile1D{p.centre, p.ux, p.uxErr, {}}, s.g, layout.lo, len[kGradientAxis], s.exclude);
     r.nu = fit.nu;
     r.nuErr = fit.nuErr;
     r.chi2PerDof = fit.chi2PerDof;

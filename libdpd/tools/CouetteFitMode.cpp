@@ -58,6 +58,7 @@ void CouetteFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t,
     const double fitHigh = s.hasFitRange ? s.fitHigh : walls.high - s.exclude;
     try {
         r.couette = fitCouette(points, walls.low, walls.high, fitLow, fitHigh, walls.velocityLow, walls.velocityHigh);
+        r.blockErrors = r.couette.blockErrors;
         r.stressColumn = shearStressName(s.component, r.axis);
         r.hasStress = t.has(r.stressColumn) && t.has(r.stressColumn + "Err");
         if (r.hasStress)

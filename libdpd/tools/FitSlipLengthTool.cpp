@@ -3,6 +3,8 @@
 #include "core/Axis.hpp"
 #include "core/Error.hpp"
 #include "io/TimeDirectories.hpp"
+#include "sampling/BinAccumulatorFile.hpp"
+#include "sampling/BinProfile.hpp"
 #include "sampling/UsableBin.hpp"
 #include "tools/FitMode.hpp"
 #include "tools/FitModeParts.hpp"
@@ -27,6 +29,7 @@ namespace {
 // A bin is usable when it saw particles (velocity defined) and, where errors exist, has one.
 struct Points {
     Profile1D profile;
+    std::vector<std::size_t> rows;  // the table rows of the points
     int withoutVelocity = 0;
     int withoutError = 0;
 };
@@ -55,9 +58,28 @@ Points usablePoints(const ProfileTableData& t, int component) {
         }
         pts.profile.y.push_back(y[i]);
         pts.profile.u.push_back(vel[i]);
+        pts.rows.push_back(i);
         if (anyError) pts.profile.uErr.push_back(err[i]);
     }
     return pts;
+}
+
+// Fewest blocks for errors from the fit applied block by block (a covariance of three coefficients).
+constexpr std::size_t kMinErrorBlocks = 4;
+
+// Attaches the blocks in which every point saw particles; says why none are attached.
+void attachBlocks(const std::vector<std::vector<double>>& tableBlocks, Points& pts, FitSlipLengthResult& r) {
+    for (const auto& block : tableBlocks) {
+        std::vector<double> u;
+        for (std::size_t row : pts.rows)
+            if (row < block.size() && std::isfinite(block[row])) u.push_back(block[row]);
+        if (u.size() == pts.rows.size()) pts.profile.blocks.push_back(std::move(u));
+    }
+    if (pts.profile.blocks.size() >= kMinErrorBlocks) return;
+    if (!tableBlocks.empty())
+        r.errorNote = std::to_string(pts.profile.blocks.size()) + " complete blocks saw particles in every bin, fewer than " +
+                      std::to_string(kMinErrorBlocks);
+    pts.profile.blocks.clear();
 }
 
 // gamma of the first pair of mobile species (NaN when there is none).
@@ -125,7 +147,8 @@ void predictSlip(const FitSlipLengthSetup& s, const ProfileTableData& t, FitSlip
 
 }  // namespace
 
-FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTableData& t, const std::string& time) {
+FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTableData& t, const std::string& time,
+                                  const TableBlocks& blocks) {
     const Dictionary& d = s.dict;
     FitSlipLengthResult r;
     r.mode = s.mode;
@@ -141,7 +164,9 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
                                                             " is the axis of the profile " + t.file);
     r.g = s.model.bodyForce->value()[s.component];
 
-    const Points pts = usablePoints(t, s.component);
+    Points pts = usablePoints(t, s.component);
+    r.errorNote = blocks.note;
+    attachBlocks(blocks.velocities, pts, r);
     r.pointsUsed = static_cast<int>(pts.profile.y.size());
     r.binsWithoutVelocity = pts.withoutVelocity;
     r.binsWithoutError = pts.withoutError;
@@ -167,6 +192,14 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
     d.setValue("g", r.g);
     d.setValue("exclude", r.exclude);
     d.setValue("points", r.pointsUsed);
+    const BlockErrorInfo& be = r.blockErrors;
+    d.setValue("errors", be.blocks > 0 ? "blocks" : "independentBins");
+    if (be.blocks > 0) {
+        d.setValue("errorBlocks", be.blocks);
+        d.setValue("errorWindow", be.window);
+        d.setValue("errorTau", be.tau);
+        d.setValue("errorWindowFound", be.windowFound ? "yes" : "no");
+    }
     r.mode->write(d, r);
     writeTunableSlipPrediction(d, r.slipPrediction);
     // An estimate for reference, not a measurement; "none" when it cannot be formed.
@@ -190,6 +223,18 @@ void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
     if (r.binsWithoutVelocity) out << ", " << r.binsWithoutVelocity << " without particles left out";
     if (r.binsWithoutError) out << ", " << r.binsWithoutError << " without an error bar left out";
     out << "\n    mode " << r.mode->name() << ", g = " << num(r.g) << ", exclude " << num(r.exclude) << "\n";
+    const BlockErrorInfo& be = r.blockErrors;
+    if (be.blocks > 0) {
+        out << "    errors from the fit block by block: " << be.blocks << " blocks, correlation time " << num(be.tau)
+            << " blocks (window " << be.window << ")\n";
+        if (!be.windowFound)
+            out << "    warning: the blocks stay correlated over a quarter of the run: the errors are uncertain "
+                   "(sample longer)\n";
+    } else if (r.mode->name() == "reversePoiseuille") {
+        out << "    errors with the bins taken as independent (mode reversePoiseuille)\n";
+    } else
+        out << "    errors with the bins taken as independent (too small where the bins fluctuate together): "
+            << (r.errorNote.empty() ? "no blocks" : r.errorNote) << "\n";
     r.mode->print(printer, ax, r);
     if (r.slipPrediction.any) {
         const TunableSlipPrediction& sp = r.slipPrediction;
@@ -204,6 +249,29 @@ void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
                     "(estimate: rho = " + num(r.densityCentral) + ", gamma = " + num(r.gamma) + ")");
     else
         printer.row("nu kinetic theory", "none (no pair of mobile species or no density)");
+}
+
+TableBlocks readTableBlocks(const std::string& samplingFile, const ProfileTableData& t, int component) {
+    TableBlocks b;
+    const std::string name = fs::path(samplingFile).filename().string();
+    if (!fs::exists(samplingFile)) {
+        b.note = "no sampling file " + name + " beside the table's time";
+        return b;
+    }
+    const StoredBins stored = readBins(samplingFile);
+    const BinLayout& layout = stored.accumulator.layout();
+    const std::vector<double>& centres = t.column(t.axisName());
+    bool same = !layout.twoAxes() && layout.nBins == static_cast<int>(centres.size()) &&
+                axisFromLetter(t.axisName()) == layout.axis;
+    for (int i = 0; same && i < layout.nBins; ++i)
+        same = std::abs(layout.centre(i) - centres[i]) <= 1e-9 * (1.0 + std::abs(centres[i]));
+    if (!same) {
+        b.note = "the bins of " + name + " are not the table's";
+        return b;
+    }
+    b.velocities = blockVelocities(stored.accumulator, component);
+    if (b.velocities.empty()) b.note = name + " has no complete block";
+    return b;
 }
 
 std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o, std::ostream& out) {
@@ -228,7 +296,9 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
         });
     std::vector<FitSlipLengthResult> results;
     for (const TimeDirectory& t : selected.times) {
-        results.push_back(fitSlipLength(setup, readProfileTable(tableOf(t).string()), t.name));
+        const ProfileTableData table = readProfileTable(tableOf(t).string());
+        const fs::path sampling = caseDir / t.name / "sampling" / (setup.profile + ".h5");
+        results.push_back(fitSlipLength(setup, table, t.name, readTableBlocks(sampling.string(), table, setup.component)));
         results.back().profileFile = (fs::path("postProcessing") / "profileBins" / t.name / (setup.profile + ".dat")).string();
     }
     for (const auto& t : selected.skipped) out << "Time = " << t << ": no profile table " << setup.profile << ".dat, skipped\n";

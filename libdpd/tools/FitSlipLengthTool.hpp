@@ -39,6 +39,15 @@
 // zero (a snapshot profile) the fit uses unit weights and scales the covariance by chi2/dof; when only
 // some errors are zero, those bins are left out (too few blocks saw particles there) and counted.
 //
+// Errors: the bins of a flow profile fluctuate together (the flow rate wanders with the channel's
+// slowest mode), so when the table's sampling file <time>/sampling/<profile>.h5 is there, with the same
+// bins and at least 4 complete blocks in which every fitted bin saw particles, the errors of the fitted
+// quantities come from the covariance of the bins over the blocks (analysis/Profile1D.hpp; fit.dat:
+// errors blockCovariance, errorBlocks m). Otherwise (a snapshot profile, a section of a 2-D grid) the
+// bins are taken as independent (errors independentBins) and the printed result says why. Blocks must
+// be long against the slowest flow mode for either to hold. reversePoiseuille always takes the bins as
+// independent.
+//
 // Results: postProcessing/fitSlipLength/<time>/fit.dat, a dictionary. Every selected time is fitted
 // before anything is written, so an error leaves the case as it was.
 #include "analysis/CouetteFit.hpp"
@@ -88,6 +97,8 @@ struct FitSlipLengthResult {
     int pointsUsed = 0;       // bins handed to the fit (before its own range selection)
     int binsWithoutVelocity = 0;  // fewer than 3 particle-samples: left out
     int binsWithoutError = 0;     // zero error among positive ones: left out
+    BlockErrorInfo blockErrors;   // blocks > 0: errors from the fit applied block by block
+    std::string errorNote;        // why the bins were taken as independent
     PoiseuilleFitResult poiseuille;     // mode poiseuille
     ReversePoiseuilleResult reverse;    // mode reversePoiseuille
     CouetteFitResult couette;           // mode couette
@@ -102,10 +113,21 @@ struct FitSlipLengthResult {
     TunableSlipPrediction slipPrediction;  // channel modes with tunable-slip walls
 };
 
-// Fits one profile table. InputError (naming fitSlipLengthDict or dpdProperties) when the setup does
+// The table's bins block by block (velocities[k][row], NaN where block k saw no particles in the row),
+// and why there are none when there are none.
+struct TableBlocks {
+    std::vector<std::vector<double>> velocities;
+    std::string note;
+};
+
+// The blocks of the sampling file a table was made from, when its bins are the table's (IoError for an
+// unreadable file).
+TableBlocks readTableBlocks(const std::string& samplingFile, const ProfileTableData& table, int component);
+
+// Fits one profile table (with its blocks, when known). InputError (naming fitSlipLengthDict or dpdProperties) when the setup does
 // not fit the table or the fit cannot be made (too few points), IoError for a missing column.
 FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& setup, const ProfileTableData& table,
-                                  const std::string& time = "");
+                                  const std::string& time = "", const TableBlocks& blocks = {});
 
 // The result as the dictionary written to fit.dat.
 Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r);

@@ -26,6 +26,7 @@ void PoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData&
     const ChannelBounds walls = channelBounds(s, t, r.axis);
     try {
         r.poiseuille = fitPoiseuille(points, r.g, walls.low, walls.high, s.exclude, walls.velocityLow, walls.velocityHigh);
+        r.blockErrors = r.poiseuille.blockErrors;
     } catch (const std::invalid_argument& e) {
         fitFailed(s, t, e);
     }

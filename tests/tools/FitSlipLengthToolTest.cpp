@@ -5,6 +5,8 @@
 
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
+#include "sampling/BinAccumulatorFile.hpp"
+#include "sampling/BinProfile.hpp"
 #include "sampling/ProfileTable.hpp"
 
 #include <gtest/gtest.h>
@@ -312,6 +314,70 @@ TEST_F(FitSlipLengthToolTest, WallPositionsAreRefusedWhereTheyDoNotFit) {
     };
     EXPECT_NE(refusal(true, "(-4.5 4.5)").find("planar walls"), std::string::npos);
     EXPECT_NE(refusal(false, "(4.5 -4.5)").find("upper > lower"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dpd
+
+namespace dpd {
+namespace {
+
+// A sampling file of 16 blocks in which the whole profile moves up and down from block to block (an
+// irregular shift of about 0.05) with little noise per bin: the table made from it, and the file itself at time 10.
+BinAccumulator shiftingBlocks(int nBins) {
+    BinLayout layout;
+    layout.axis = 2;
+    layout.nBins = nBins;
+    layout.lo = -kWall;
+    layout.hi = kWall;
+    std::vector<std::vector<BinSums>> blocks;
+    for (int k = 0; k < 16; ++k) {
+        const double shift = 0.05 * std::sin(1.3 + 2.9 * k * k);
+        std::vector<BinSums> bins(nBins);
+        for (int b = 0; b < nBins; ++b) {
+            const double n = 1000.0, u = poiseuille(layout.centre(b)) + shift + 1e-3 * std::sin(3.0 * b + k);
+            bins[b].s[0] = n;
+            bins[b].s[1] = n * u;
+            bins[b].s[4] = n * (u * u + 1.0);
+            bins[b].s[5] = bins[b].s[6] = n;
+        }
+        blocks.push_back(bins);
+    }
+    return BinAccumulator::fromBlocks(layout, {1, 0}, 100, blocks, std::vector<long>(16, 100));
+}
+
+TEST_F(FitSlipLengthToolTest, ErrorsComeFromTheBlocksOfTheSamplingFile) {
+    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);"));
+    writeDict("mode poiseuille;\nprofile channelProfile;\n");
+    const BinAccumulator acc = shiftingBlocks(kBins);
+    writeTable(computeProfile(acc, 1.0, 3));
+    const auto independent = run();
+    EXPECT_EQ(fitDat().get<std::string>("errors"), "independentBins");
+    fs::create_directories(dir_ / "10/sampling");
+    writeBins((dir_ / "10/sampling/channelProfile.h5").string(), acc, 3, 1.0, 10.0);
+    std::string printed;
+    const auto blocks = run(&printed);
+    const Dictionary d = fitDat();
+    EXPECT_EQ(d.get<std::string>("errors"), "blocks");
+    EXPECT_EQ(d.get<int>("errorBlocks"), 16);
+    EXPECT_NE(printed.find("16 blocks"), std::string::npos) << printed;
+    // The same fitted values; the slip velocity's error is the spread of the shift (~0.035 / sqrt(16)),
+    // not the bins' noise averaged as if independent.
+    EXPECT_EQ(blocks[0].poiseuille.lower.slipVelocity, independent[0].poiseuille.lower.slipVelocity);
+    EXPECT_GT(blocks[0].poiseuille.lower.slipVelocityErr, 0.005);
+    EXPECT_GT(blocks[0].poiseuille.lower.slipVelocityErr, 5.0 * independent[0].poiseuille.lower.slipVelocityErr);
+}
+
+TEST_F(FitSlipLengthToolTest, ASamplingFileWithOtherBinsIsNotUsed) {
+    write("constant/dpdProperties", channelProperties("type uniform; value (0.02 0 0);"));
+    writeDict("mode poiseuille;\nprofile channelProfile;\n");
+    writeTable(computeProfile(shiftingBlocks(kBins), 1.0, 3));
+    fs::create_directories(dir_ / "10/sampling");
+    writeBins((dir_ / "10/sampling/channelProfile.h5").string(), shiftingBlocks(kBins / 2), 3, 1.0, 10.0);
+    std::string printed;
+    run(&printed);
+    EXPECT_EQ(fitDat().get<std::string>("errors"), "independentBins");
+    EXPECT_NE(printed.find("are not the table's"), std::string::npos) << printed;
 }
 
 }  // namespace

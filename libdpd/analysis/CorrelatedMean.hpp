@@ -1,0 +1,29 @@
+#pragma once
+// The covariance of the mean of a correlated series of vectors (block values of several quantities, in
+// time order), by summing its autocovariances up to a window chosen from the data (Sokal's automatic
+// window; Madras & Sokal 1988, docs/analysis.md section 5.2):
+//   C = (Gamma_0 + sum_{l=1..W} (Gamma_l + Gamma_l^T)) / m,   Gamma_l = <(q_k - qbar)(q_{k+l} - qbar)^T>,
+// W the smallest window with W >= 5 tau_int(W) for every component, tau_int(W) = 1/2 + sum_{l<=W} rho_l,
+// Gamma_l averaged over its m - l products and the sum corrected for the mean's own fluctuation by the
+// factor 1 + (2W + 1)/m (Wolff, Comput. Phys. Commun. 156 (2004) 143).
+// Where the sum is not positive definite (strongly anticorrelated blocks) the plain Gamma_0 / m is kept,
+// with window 0. Independent blocks give tau_int ~ 1/2 and C ~ Gamma_0 / m (the plain standard error); blocks shorter
+// than the flow's slowest mode give tau_int > 1/2 and larger errors.
+#include "analysis/WeightedPolyFit.hpp"
+
+#include <vector>
+
+namespace dpd {
+
+struct CorrelatedMean {
+    Eigen::VectorXd mean;
+    Eigen::MatrixXd covariance;  // of the mean
+    int window = 0;              // W, in blocks
+    double maxTau = 0.0;         // the largest tau_int(W) of the components, in blocks
+    bool windowFound = true;     // false: the window reached a quarter of the series (the errors are uncertain)
+};
+
+// Throws std::invalid_argument for fewer than 4 values or vectors of different sizes.
+CorrelatedMean correlatedMean(const std::vector<Eigen::VectorXd>& series);
+
+}  // namespace dpd
