@@ -1,6 +1,9 @@
 #include "analysis/PoiseuilleFit.hpp"
 
+#include "analysis/CorrelatedMean.hpp"
 #include "analysis/WeightedPolyFit.hpp"
+
+#include <algorithm>
 
 #include <cmath>
 #include <functional>
@@ -59,6 +62,47 @@ Viscosity combine(Viscosity a, Viscosity b) {
     if (b.error == 0.0) return b;
     const double wa = 1.0 / (a.error * a.error), wb = 1.0 / (b.error * b.error);
     return {(wa * a.value + wb * b.value) / (wa + wb), 1.0 / std::sqrt(wa + wb)};
+}
+
+// The standard error of the mean of a block series, times the chi^2 factor.
+double seriesError(const std::vector<double>& values, double scale, BlockErrorInfo* info = nullptr) {
+    std::vector<Eigen::VectorXd> series;
+    for (double v : values) series.push_back(Eigen::VectorXd::Constant(1, v));
+    const CorrelatedMean c = correlatedMean(series);
+    if (info) *info = {static_cast<int>(values.size()), c.window, c.maxTau, c.windowFound};
+    return std::sqrt(c.covariance(0, 0) * scale);
+}
+
+// Reverse Poiseuille with blocks: each half's viscosity block by block (linearised in its curvature),
+// their mean, and its error from the block series of the mean itself: the halves share the flow's
+// modes, so they are not independent.
+ReversePoiseuilleResult reverseFromBlocks(const Profile1D& first, const Profile1D& second, double g) {
+    const PolyFitResult fit1 = fitProfilePolynomial(first, 2), fit2 = fitProfilePolynomial(second, 2);
+    const int dof = fit1.dof + fit2.dof;
+    const double scale = std::max(1.0, (fit1.chi2 + fit2.chi2) / dof);
+    const double c1 = fit1.coefficients(2), c2 = fit2.coefficients(2);
+    // nu1 = -g / (2 c1), nu2 = +g / (2 c2): their slopes in the curvatures.
+    const double slope1 = g / (2.0 * c1 * c1), slope2 = -g / (2.0 * c2 * c2);
+    std::vector<double> d1, d2;
+    for (std::size_t k = 0; k < fit1.blockCoefficients.size(); ++k) {
+        d1.push_back(slope1 * fit1.blockCoefficients[k](2));
+        d2.push_back(slope2 * fit2.blockCoefficients[k](2));
+    }
+    const Viscosity nu1{-g / (2.0 * c1), seriesError(d1, scale)}, nu2{g / (2.0 * c2), seriesError(d2, scale)};
+    // The halves are mirror images with the same points: equal weights (weights from the noisy block
+    // errors would favour whichever half fluctuated less and make the combined error too small).
+    const Viscosity weighted{0.5 * (nu1.value + nu2.value), 0.0};
+    std::vector<double> both;
+    for (std::size_t k = 0; k < d1.size(); ++k) both.push_back(0.5 * (d1[k] + d2[k]));
+    ReversePoiseuilleResult r;
+    r.nu = weighted.value;
+    r.nuErr = seriesError(both, scale, &r.blockErrors);
+    r.nuFirstHalf = nu1.value;
+    r.nuFirstHalfErr = nu1.error;
+    r.nuSecondHalf = nu2.value;
+    r.nuSecondHalfErr = nu2.error;
+    r.chi2PerDof = chi2PerDof(fit1.chi2 + fit2.chi2, dof);
+    return r;
 }
 
 }  // namespace
@@ -143,6 +187,7 @@ ReversePoiseuilleResult fitReversePoiseuille(const Profile1D& p, double g, doubl
     const Profile1D second = selectProfilePoints(p, wrap, inSecond);
     requireEnoughPoints(first, "fitReversePoiseuille: first half (force +g)");
     requireEnoughPoints(second, "fitReversePoiseuille: second half (force -g)");
+    if (!p.blocks.empty()) return reverseFromBlocks(first, second, g);
 
     // Both halves share one noise model, so the scatter factor (reduced chi^2) is estimated once from both
     // together: scaling each half by its own, noisier, chi^2 would feed that noise into the weights of the

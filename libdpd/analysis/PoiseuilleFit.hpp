@@ -61,6 +61,7 @@ struct ReversePoiseuilleResult {
     double nuFirstHalf = 0.0, nuFirstHalfErr = 0.0;    // y in [yLo, yLo + L/2), force +g
     double nuSecondHalf = 0.0, nuSecondHalfErr = 0.0;  // y in [yLo + L/2, yLo + L), force -g
     double chi2PerDof = 0.0;                       // both halves together, with the given errors
+    BlockErrorInfo blockErrors;                    // blocks 0: errors from the points' errors alone
 };
 
 // Periodic "reverse Poiseuille" flow: force +g on [yLo, yLo + L/2), -g on the other half. Each half is fitted
@@ -70,7 +71,9 @@ struct ReversePoiseuilleResult {
 // scaled by one reduced chi^2 pooled over both halves (they share the noise model; a per-half scale would be
 // noisier and would bias the inverse-variance weights of the combination). Throws
 // std::invalid_argument for g zero or not finite, length <= 0, exclude outside [0, L/4), or fewer than 4
-// points in either half. The profile's blocks are not used: the points are taken as independent.
+// points in either half. With the profile's blocks, each half's error comes from its blocks and the
+// combined error from the block series of the combination (the halves move together); without them the
+// points are taken as independent.
 ReversePoiseuilleResult fitReversePoiseuille(const Profile1D& p, double g, double yLo, double length,
                                              double exclude = 1.0);
 

@@ -74,7 +74,7 @@ void readViscosity(const Dictionary& d, SpeedAccuracySettings& s) {
 }  // namespace
 
 SpeedAccuracySettings readSpeedAccuracySettings(const Dictionary& d) {
-    d.checkKeys({"fluid", "integrators", "deltaT", "reference", "equilibrationTime", "productionTime", "blockTime",
+    d.checkKeys({"fluid", "integrators", "deltaT", "reference", "referenceDeltaT", "equilibrationTime", "productionTime", "blockTime",
                  "maxKTRatio", "viscosity"});
     SpeedAccuracySettings s;
     s.fluid = readFluid(d);
@@ -86,6 +86,11 @@ SpeedAccuracySettings readSpeedAccuracySettings(const Dictionary& d) {
     s.reference = d.get<std::string>("reference");
     if (std::none_of(s.integrators.begin(), s.integrators.end(), [&](const SpeedAccuracyCase& c) { return c.label == s.reference; }))
         d.fail("reference", "'" + s.reference + "' is not one of the integrators");
+    const double smallest = *std::min_element(s.deltaT.begin(), s.deltaT.end());
+    s.referenceDeltaT = d.found("referenceDeltaT") ? d.get<double>("referenceDeltaT") : 0.5 * smallest;
+    if (!(s.referenceDeltaT > 0.0 && s.referenceDeltaT < smallest))
+        d.fail("referenceDeltaT", "the reference step must be positive and smaller than every deltaT (the smallest is " +
+                                      std::to_string(smallest) + "): a studied run is not its own reference");
     readRunTimes(d, s.probe);
     s.probe.samplePressure = true;
     s.probe.maxKTRatio = d.getOrDefault<double>("maxKTRatio", s.probe.maxKTRatio);
@@ -116,45 +121,59 @@ StandardFluidSettings viscosityFluid(const SpeedAccuracySettings& s) {
 
 }  // namespace
 
+namespace {
+
+// One integrator at one step, from the equilibrated states.
+SpeedAccuracyRow runCase(const SpeedAccuracySettings& s, const SpeedAccuracyCase& c, double dt, const System& equilibrated,
+                         const System& flowFluid, std::ostream& progress) {
+    System sys = equilibrated;
+    sys.forceParameters.dt = dt;
+    sys.computeForces();
+    auto integrator = makeIntegrator(c.integrator);
+    SpeedAccuracyRow row;
+    row.label = c.label;
+    row.dt = dt;
+    row.result = probeTemperature(sys, *integrator, s.probe);
+    row.secondsPerParticleTimeUnit =
+        row.result.cpuSeconds / (static_cast<double>(sys.particles.size()) * s.probe.productionTime);
+    progress << std::setw(12) << c.label << "  dt " << std::setw(6) << dt << "  ";
+    if (row.result.unstable)
+        progress << "unstable after " << row.result.unstableAfter << " time units: " << row.result.problem << "\n";
+    else
+        progress << "kT error " << std::showpos << std::setprecision(3) << 100.0 * (row.result.kT / s.fluid.kT - 1.0)
+                 << std::noshowpos << " % +- " << 100.0 * row.result.standardError / s.fluid.kT << " %, "
+                 << row.secondsPerParticleTimeUnit << " CPU s per particle per time unit, P " << row.result.pressure
+                 << " +- " << row.result.pressureStandardError << "\n";
+    if (s.viscosity && !row.result.unstable) {
+        System flow = flowFluid;
+        flow.forceParameters.dt = dt;
+        auto flowIntegrator = makeIntegrator(c.integrator);
+        row.hasViscosity = true;
+        row.viscosity = probeViscosity(flow, *flowIntegrator, s.viscosityProbe);
+        progress << std::setw(12) << "" << "  viscosity: ";
+        if (row.viscosity.unstable) progress << "unstable: " << row.viscosity.problem << "\n";
+        else
+            progress << "nu " << row.viscosity.nu << " +- " << row.viscosity.nuErr << " (chi2/dof "
+                     << row.viscosity.chi2PerDof << ")\n";
+    }
+    progress.flush();
+    return row;
+}
+
+}  // namespace
+
 std::vector<SpeedAccuracyRow> runSpeedAccuracyStudy(const SpeedAccuracySettings& s, std::ostream& progress) {
     const System equilibrated = equilibratedFluid(s.fluid);
     const System flowFluid = s.viscosity ? equilibratedFluid(viscosityFluid(s)) : System{};
     std::vector<SpeedAccuracyRow> rows;
+    const auto reference = std::find_if(s.integrators.begin(), s.integrators.end(),
+                                        [&](const SpeedAccuracyCase& c) { return c.label == s.reference; });
+    progress << "reference run:\n";
+    rows.push_back(runCase(s, *reference, s.referenceDeltaT, equilibrated, flowFluid, progress));
+    rows.back().isReference = true;
+    progress << "studied steps:\n";
     for (const SpeedAccuracyCase& c : s.integrators)
-        for (double dt : s.deltaT) {
-            System sys = equilibrated;
-            sys.forceParameters.dt = dt;
-            sys.computeForces();
-            auto integrator = makeIntegrator(c.integrator);
-            SpeedAccuracyRow row;
-            row.label = c.label;
-            row.dt = dt;
-            row.result = probeTemperature(sys, *integrator, s.probe);
-            row.secondsPerParticleTimeUnit =
-                row.result.cpuSeconds / (static_cast<double>(sys.particles.size()) * s.probe.productionTime);
-            progress << std::setw(12) << c.label << "  dt " << std::setw(6) << dt << "  ";
-            if (row.result.unstable)
-                progress << "unstable after " << row.result.unstableAfter << " time units: " << row.result.problem << "\n";
-            else
-                progress << "kT error " << std::showpos << std::setprecision(3) << 100.0 * (row.result.kT / s.fluid.kT - 1.0)
-                         << std::noshowpos << " % +- " << 100.0 * row.result.standardError / s.fluid.kT << " %, "
-                         << row.secondsPerParticleTimeUnit << " CPU s per particle per time unit, P " << row.result.pressure
-                         << " +- " << row.result.pressureStandardError << "\n";
-            if (s.viscosity && !row.result.unstable) {
-                System flow = flowFluid;
-                flow.forceParameters.dt = dt;
-                auto flowIntegrator = makeIntegrator(c.integrator);
-                row.hasViscosity = true;
-                row.viscosity = probeViscosity(flow, *flowIntegrator, s.viscosityProbe);
-                progress << std::setw(12) << "" << "  viscosity: ";
-                if (row.viscosity.unstable) progress << "unstable: " << row.viscosity.problem << "\n";
-                else
-                    progress << "nu " << row.viscosity.nu << " +- " << row.viscosity.nuErr << " (chi2/dof "
-                             << row.viscosity.chi2PerDof << ")\n";
-            }
-            progress.flush();
-            rows.push_back(row);
-        }
+        for (double dt : s.deltaT) rows.push_back(runCase(s, c, dt, equilibrated, flowFluid, progress));
     return rows;
 }
 
@@ -174,10 +193,8 @@ Estimate viscosityOf(const SpeedAccuracyRow& r) {
     return {r.viscosity.nu, r.viscosity.nuErr};
 }
 
-// x / reference - 1 with the two errors in quadrature (the runs are independent); the reference
-// against itself is 0 with its own relative error.
-Estimate relativeError(const Estimate& x, const Estimate& reference, bool isReference) {
-    if (isReference) return {0.0, reference.error / reference.value};
+// x / reference - 1 with the two errors in quadrature (the runs are independent).
+Estimate relativeError(const Estimate& x, const Estimate& reference) {
     return {x.value / reference.value - 1.0, std::hypot(x.error, reference.error) / reference.value};
 }
 
@@ -186,7 +203,7 @@ Estimate relativeError(const Estimate& x, const Estimate& reference, bool isRefe
 std::string speedAccuracyTable(const std::vector<SpeedAccuracyRow>& rows, const SpeedAccuracySettings& s) {
     const SpeedAccuracyRow* reference = nullptr;
     for (const SpeedAccuracyRow& r : rows)
-        if (r.label == s.reference && (!reference || r.dt < reference->dt)) reference = &r;
+        if (r.isReference) reference = &r;
     const Estimate pRef = reference ? pressureOf(*reference) : Estimate{};
     const Estimate nuRef = reference ? viscosityOf(*reference) : Estimate{};
     std::ostringstream os;
@@ -195,16 +212,18 @@ std::string speedAccuracyTable(const std::vector<SpeedAccuracyRow>& rows, const 
        << "# kTError: <kT> / kT - 1 (relative), kTErrorSE its block standard error; pressure: <P> (virial + kinetic)\n"
        << "# with its block standard error; nu: kinematic viscosity from reverse-Poiseuille flow and its fit error\n"
        << "# (nan: not measured). pressureError, nuError: relative to the reference, " << s.reference << " at dt "
-       << (reference ? reference->dt : std::nan("")) << ", their SE both errors in quadrature (the reference's own\n"
-       << "# relative error on its row). secondsPerParticleTimeUnit: CPU seconds of the process (all threads) per\n"
+       << (reference ? reference->dt : std::nan("")) << ", their SE both errors in quadrature.\n"
+       << "# reference run: " << s.reference << " dt " << (reference ? reference->dt : std::nan("")) << " pressure "
+       << pRef.value << " " << pRef.error << " nu " << nuRef.value << " " << nuRef.error << "\n"
+       << "# secondsPerParticleTimeUnit: CPU seconds of the process (all threads) per\n"
        << "# particle per time unit simulated, steps only. unstable: 1 when the run's monitor stopped it after\n"
        << "# unstableAfter time units.\n";
     os << std::setprecision(6);
     for (const SpeedAccuracyRow& r : rows) {
+        if (r.isReference) continue;
         const bool bad = r.result.unstable;
-        const bool isReference = &r == reference;
         const Estimate p = pressureOf(r), nu = viscosityOf(r);
-        const Estimate pErr = relativeError(p, pRef, isReference), nuErr = relativeError(nu, nuRef, isReference);
+        const Estimate pErr = relativeError(p, pRef), nuErr = relativeError(nu, nuRef);
         const double kT = s.fluid.kT;
         os << r.label << " " << r.dt << " " << (bad ? std::nan("") : r.result.kT / kT - 1.0) << " "
            << (bad ? std::nan("") : r.result.standardError / kT) << " " << p.value << " " << p.error << " " << pErr.value

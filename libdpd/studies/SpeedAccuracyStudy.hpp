@@ -4,13 +4,15 @@
 // it, and the cost of one time unit (CPU seconds per particle per time unit: the work, robust to
 // other jobs on the machine); optionally the viscosity
 // from a reverse-Poiseuille run of the same integrator and step (studies/ViscosityProbe). Pressure
-// and viscosity errors are taken against a reference: the smallest step of the integrator named by
-// `reference`. Read from system/integratorSpeedAccuracyDict:
+// and viscosity errors are taken against a reference run: the integrator named by `reference` at
+// referenceDeltaT, a step smaller than any studied (so no studied run is compared with itself).
+// Read from system/integratorSpeedAccuracyDict:
 //
 //   fluid       { particles 648; density 3; a 25; gamma 4.5; kT 1; seed 2; }
 //   integrators { GW065 { type GrootWarren; lambda 0.65; } VV { type DPDVV; } S1 { type Shardlow; } }
 //   deltaT      (0.01 0.02 0.04 0.06 0.08 0.1);
-//   reference   VV;        // its smallest deltaT is the reference for pressure and viscosity
+//   reference   VV;        // the reference run's integrator for pressure and viscosity
+//   referenceDeltaT 0.005; // its step, below every deltaT (default: half the smallest deltaT)
 //   equilibrationTime 5;  productionTime 50;  blockTime 5;  maxKTRatio 2;
 //   viscosity                          // optional: no viscosity columns without it
 //   {
@@ -43,7 +45,8 @@ struct SpeedAccuracySettings {
     StandardFluidSettings fluid;
     std::vector<SpeedAccuracyCase> integrators;
     std::vector<double> deltaT;
-    std::string reference;  // the label whose smallest step is the reference for pressure and viscosity
+    std::string reference;  // the integrator of the reference run for pressure and viscosity
+    double referenceDeltaT = 0.0;  // its step, below every deltaT
     TemperatureProbeSettings probe;  // with samplePressure on
     bool viscosity = false;           // whether to run the viscosity probes
     double viscosityLengthRatio = 2.0;
@@ -57,15 +60,18 @@ struct SpeedAccuracyRow {
     double secondsPerParticleTimeUnit = 0.0;  // production CPU time (all threads) / (particles x production time)
     bool hasViscosity = false;
     ViscosityProbeResult viscosity;
+    bool isReference = false;  // the reference run (at referenceDeltaT), not a studied step
 };
 
 // Errors name the file, line and keyword.
 SpeedAccuracySettings readSpeedAccuracySettings(const Dictionary& d);
 
-// Runs every integrator at every step; `progress` gets one line per case.
+// Runs the reference, then every integrator at every step; `progress` gets one line per case. The
+// reference run is the first row.
 std::vector<SpeedAccuracyRow> runSpeedAccuracyStudy(const SpeedAccuracySettings& s, std::ostream& progress);
 
-// The table: one row per case, columns
+// The table: the reference run in the header (pressure and nu with their errors), then one row per
+// studied case, columns
 //   integrator dt kTError kTErrorSE pressure pressureSE pressureError pressureErrorSE
 //   nu nuSE nuError nuErrorSE secondsPerParticleTimeUnit unstable unstableAfter
 // errors relative (kT against the set kT; pressure and nu against the reference row, their errors

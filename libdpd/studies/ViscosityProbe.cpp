@@ -63,8 +63,11 @@ ViscosityProbeResult probeViscosity(const System& fluid, Integrator& integrator,
     const Eigen::Vector3d len = sys.box.length();
     const double crossSection = sys.box.dimension == 3 ? len.x() * len.y() : len.x();
     const BinProfile p = computeProfile(profile, crossSection, sys.box.dimension);
+    // The blocks too when there are enough (4) for errors from them: the bins move together.
+    std::vector<std::vector<double>> blocks = blockVelocities(profile, 0);
+    if (blocks.size() < 4) blocks.clear();
     const ReversePoiseuilleResult fit =
-        fitReversePoiseuille(Profile1D{p.centre, p.ux, p.uxErr, {}}, s.g, layout.lo, len[kGradientAxis], s.exclude);
+        fitReversePoiseuille(Profile1D{p.centre, p.ux, p.uxErr, blocks}, s.g, layout.lo, len[kGradientAxis], s.exclude);
     r.nu = fit.nu;
     r.nuErr = fit.nuErr;
     r.chi2PerDof = fit.chi2PerDof;

@@ -230,8 +230,6 @@ void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
         if (!be.windowFound)
             out << "    warning: the blocks stay correlated over a quarter of the run: the errors are uncertain "
                    "(sample longer)\n";
-    } else if (r.mode->name() == "reversePoiseuille") {
-        out << "    errors with the bins taken as independent (mode reversePoiseuille)\n";
     } else
         out << "    errors with the bins taken as independent (too small where the bins fluctuate together): "
             << (r.errorNote.empty() ? "no blocks" : r.errorNote) << "\n";

@@ -45,8 +45,7 @@
 // quantities come from the covariance of the bins over the blocks (analysis/Profile1D.hpp; fit.dat:
 // errors blockCovariance, errorBlocks m). Otherwise (a snapshot profile, a section of a 2-D grid) the
 // bins are taken as independent (errors independentBins) and the printed result says why. Blocks must
-// be long against the slowest flow mode for either to hold. reversePoiseuille always takes the bins as
-// independent.
+// be long against the slowest flow mode for either to hold.
 //
 // Results: postProcessing/fitSlipLength/<time>/fit.dat, a dictionary. Every selected time is fitted
 // before anything is written, so an error leaves the case as it was.

@@ -33,6 +33,7 @@ void ReversePoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTab
     r.boxLength = hi - lo;
     try {
         r.reverse = fitReversePoiseuille(points, r.g, r.boxLow, r.boxLength, s.exclude);
+        r.blockErrors = r.reverse.blockErrors;
     } catch (const std::invalid_argument& e) {
         fitFailed(s, t, e);
     }

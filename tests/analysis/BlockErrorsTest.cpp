@@ -180,3 +180,45 @@ TEST(BlockErrors, AnticorrelatedBlocksKeepThePlainError) {
 
 }  // namespace
 }  // namespace dpd
+
+namespace dpd {
+namespace {
+
+TEST(BlockErrors, ReversePoiseuilleErrorsCoverTheTruthWhenTheProfileMovesAsAWhole) {
+    // Box [0, 20), nu 0.3, g 0.05, +g on the first half. The common shift moves both halves; a mode
+    // shaped like the profile itself (its amplitude AR(1) from block to block) moves the curvature.
+    const double L = 20.0, nu = 0.3, g = 0.05;
+    const auto shape = [&](double y) {
+        const double h = 0.5 * L;
+        return y < h ? g / (2 * nu) * y * (h - y) : -g / (2 * nu) * (y - h) * (L - y);
+    };
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    int hits = 0, naive = 0;
+    for (int rep = 0; rep < kRepetitions; ++rep) {
+        Profile1D p = correlatedBlocks(shape, 0.0, L, 40, 0.05, 0.05, rng);
+        double a = 0.0;
+        for (auto& block : p.blocks) {  // the curvature mode: 2 % of the profile per block, correlated
+            a = kRho * a + std::sqrt(1.0 - kRho * kRho) * 0.02 * normal(rng);
+            for (std::size_t i = 0; i < block.size(); ++i) block[i] += a * shape(p.y[i]);
+        }
+        for (std::size_t i = 0; i < p.y.size(); ++i) {
+            double mean = 0.0, var = 0.0;
+            for (const auto& b : p.blocks) mean += b[i];
+            mean /= kBlocks;
+            for (const auto& b : p.blocks) var += (b[i] - mean) * (b[i] - mean);
+            p.u[i] = mean;
+            p.uErr[i] = std::sqrt(var / (kBlocks - 1) / kBlocks);
+        }
+        const ReversePoiseuilleResult r = fitReversePoiseuille(p, g, 0.0, L, 1.0);
+        hits += std::abs(r.nu - nu) < r.nuErr;
+        const ReversePoiseuilleResult n = fitReversePoiseuille(withoutBlocks(p), g, 0.0, L, 1.0);
+        naive += std::abs(n.nu - nu) < n.nuErr;
+    }
+    EXPECT_GT(fraction(hits), kCoverageLow);
+    EXPECT_LT(fraction(hits), kCoverageHigh);
+    EXPECT_LT(fraction(naive), 0.45);
+}
+
+}  // namespace
+}  // namespace dpd

@@ -62,3 +62,13 @@ TEST(SpeedAccuracySettings, TooFewBinsForTheFitNamesTheKeyword) {
     const std::string e = errorOf(kBase + "reference VV;\n" + v);
     EXPECT_NE(e.find("bins"), std::string::npos) << e;
 }
+
+TEST(SpeedAccuracySettings, TheReferenceStepIsBelowEveryStudiedStep) {
+    EXPECT_DOUBLE_EQ(read(kBase + "reference VV;\n").referenceDeltaT, 0.005);  // half the smallest
+    EXPECT_DOUBLE_EQ(read(kBase + "reference VV;\nreferenceDeltaT 0.002;\n").referenceDeltaT, 0.002);
+    for (const char* dt : {"0.01", "0.015", "0", "-0.001"}) {
+        const std::string e = errorOf(kBase + "reference VV;\nreferenceDeltaT " + dt + ";\n");
+        EXPECT_NE(e.find("referenceDeltaT"), std::string::npos) << dt << ": " << e;
+        EXPECT_NE(e.find("its own reference"), std::string::npos) << dt << ": " << e;
+    }
+}
