@@ -5,14 +5,16 @@
 //
 // What it can decide: each fit must be parabolic within the block errors (chi^2 per degree of freedom
 // < 3: with ~10 degrees of freedom per half a value above 2.5 has a probability below 1 %), its
-// standard error within 0.05 (measured 0.017-0.028), and nu positive and within a factor of two of the
-// kinetic-theory estimate (0.32), which rules out sign and unit slips (a halved force gives twice nu).
+// standard error within 0.05, and nu positive and within a factor of two of the kinetic-theory
+// estimate (0.32), which rules out sign and unit slips (a halved force gives twice nu). The errors come
+// from 32 blocks of 5 time units with their correlation summed (analysis/CorrelatedMean.hpp): 160 time
+// units are ~18 relaxation times, SE measured 0.017-0.021 (40 time units gave 0.028-0.068 with 8
+// blocks, too few to measure the correlation, which is why the sampling is four times longer).
 //
 // What it cannot decide, and so does not claim: that nu does not depend on the start. Each run
 // equilibrates for 30 time units (3.4 relaxation times tau = (Lz/2)^2 / (pi^2 nu) = 8.7, leaving 3 % of
-// the start's error), but with SE ~0.02-0.03 per run the two answers could only be told apart at ~0.13
-// (4 combined SE, 45 % of nu), and blocks of 5 time units (shorter than tau) understate the scatter by
-// up to ~1.9. Resolving a 5 % dependence would take ~80 times the sampling. The independence of the
+// the start's error), but with SE ~0.02 per run the two answers could only be told apart at ~0.11
+// (4 combined SE, 40 % of nu). Resolving a 5 % dependence would take ~60 times the sampling. The independence of the
 // start is instead what the full-size viscosity runs show (tutorials/channel/poiseuille/viscosity).
 #include "analysis/PoiseuilleFit.hpp"
 #include "integrators/Integrator.hpp"
@@ -42,8 +44,8 @@ TEST(ViscosityProbe, ReversePoiseuilleGivesAParabolaAndAPlausibleViscosityFromEi
     s.bins = 20;
     s.exclude = 1.0;
     s.run.equilibrationTime = 30.0;
-    s.run.productionTime = 40.0;
-    s.run.blocks = 8;
+    s.run.productionTime = 160.0;
+    s.run.blocks = 32;
     ViscosityProbeResult r[2];
     const double starts[2] = {0.15, 0.6};
     for (int k = 0; k < 2; ++k) {
