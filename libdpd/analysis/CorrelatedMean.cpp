@@ -53,9 +53,12 @@ CorrelatedMean correlatedMean(const std::vector<Eigen::VectorXd>& series) {
             break;
         }
     }
-    // Strongly anticorrelated blocks (not seen in flows) can make the sum lose positive definiteness:
-    // keep the independent-block estimate then.
-    if (Eigen::LLT<Eigen::MatrixXd>(0.5 * (sum + sum.transpose())).info() != Eigen::Success) {
+    // A block mean cannot be better than independent blocks make it (tau_int >= 1/2): a window whose
+    // sum falls below Gamma_0 for any component has caught noise (or anticorrelation, which flows do
+    // not show), and the independent-block estimate is kept.
+    bool below = false;
+    for (Eigen::Index i = 0; i < n; ++i) below = below || sum(i, i) < gamma0(i, i);
+    if (below) {
         sum = gamma0;
         w = 0;
         tau.setConstant(0.5);

@@ -74,7 +74,7 @@ void readViscosity(const Dictionary& d, SpeedAccuracySettings& s) {
 }  // namespace
 
 SpeedAccuracySettings readSpeedAccuracySettings(const Dictionary& d) {
-    d.checkKeys({"fluid", "integrators", "deltaT", "reference", "referenceDeltaT", "equilibrationTime", "productionTime", "blockTime",
+    d.checkKeys({"fluid", "integrators", "deltaT", "reference", "referenceDeltaT", "referenceTimeFactor", "equilibrationTime", "productionTime", "blockTime",
                  "maxKTRatio", "viscosity"});
     SpeedAccuracySettings s;
     s.fluid = readFluid(d);
@@ -91,6 +91,7 @@ SpeedAccuracySettings readSpeedAccuracySettings(const Dictionary& d) {
     if (!(s.referenceDeltaT > 0.0 && s.referenceDeltaT < smallest))
         d.fail("referenceDeltaT", "the reference step must be positive and smaller than every deltaT (the smallest is " +
                                       std::to_string(smallest) + "): a studied run is not its own reference");
+    s.referenceTimeFactor = d.found("referenceTimeFactor") ? d.getPositive<int>("referenceTimeFactor") : 4;
     readRunTimes(d, s.probe);
     s.probe.samplePressure = true;
     s.probe.maxKTRatio = d.getOrDefault<double>("maxKTRatio", s.probe.maxKTRatio);
@@ -168,8 +169,13 @@ std::vector<SpeedAccuracyRow> runSpeedAccuracyStudy(const SpeedAccuracySettings&
     std::vector<SpeedAccuracyRow> rows;
     const auto reference = std::find_if(s.integrators.begin(), s.integrators.end(),
                                         [&](const SpeedAccuracyCase& c) { return c.label == s.reference; });
-    progress << "reference run:\n";
-    rows.push_back(runCase(s, *reference, s.referenceDeltaT, equilibrated, flowFluid, progress));
+    progress << "reference run (" << s.referenceTimeFactor << " times the sampling):\n";
+    SpeedAccuracySettings longer = s;
+    for (TemperatureProbeSettings* p : {&longer.probe, &longer.viscosityProbe.run}) {
+        p->productionTime *= s.referenceTimeFactor;
+        p->blocks *= s.referenceTimeFactor;
+    }
+    rows.push_back(runCase(longer, *reference, s.referenceDeltaT, equilibrated, flowFluid, progress));
     rows.back().isReference = true;
     progress << "studied steps:\n";
     for (const SpeedAccuracyCase& c : s.integrators)

@@ -13,6 +13,8 @@
 //   deltaT      (0.01 0.02 0.04 0.06 0.08 0.1);
 //   reference   VV;        // the reference run's integrator for pressure and viscosity
 //   referenceDeltaT 0.005; // its step, below every deltaT (default: half the smallest deltaT)
+//   referenceTimeFactor 4; // it samples this many times longer than the studied runs (default 4), so
+//                          // that its error is small beside theirs
 //   equilibrationTime 5;  productionTime 50;  blockTime 5;  maxKTRatio 2;
 //   viscosity                          // optional: no viscosity columns without it
 //   {
@@ -47,6 +49,7 @@ struct SpeedAccuracySettings {
     std::vector<double> deltaT;
     std::string reference;  // the integrator of the reference run for pressure and viscosity
     double referenceDeltaT = 0.0;  // its step, below every deltaT
+    int referenceTimeFactor = 4;   // its production times (and blocks) are this many times the studied runs
     TemperatureProbeSettings probe;  // with samplePressure on
     bool viscosity = false;           // whether to run the viscosity probes
     double viscosityLengthRatio = 2.0;

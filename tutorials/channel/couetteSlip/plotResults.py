@@ -19,11 +19,22 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from dpdResults import latest, read_sweep, read_table  # noqa: E402
+from dpdResults import latest, read_dict, read_sweep, read_table  # noqa: E402
 
-# The viscosity of this fluid without walls (rho 4, a 18.75, gamma 4.5, GrootWarren 0.65, dt 0.02):
-# periodic reverse Poiseuille, tutorials/channel/poiseuille/viscosity (1000 time units, 60 x 3 x 40).
-NU_NO_WALLS, NU_NO_WALLS_ERR = 0.2716, 0.0004
+TEST_MODE = "-test" in sys.argv[1:]
+# The channel's nu = stress / (rho shear rate) is held to the viscosity of the same fluid without walls,
+# measured by this tutorial's own run (viscosity/: periodic reverse Poiseuille at the channel's shear
+# rate). The check decides only when the combined standard error of the two is within its budget:
+# full size, nu without walls +-1.4 % and the channel's +-0.3 % (measured), budget 2 %; test mode,
+# the channel's 10 x 3 x 10 run adds +-1.5-2 %, budget 3 %. Then |difference| within 5 %, fixed.
+NU_BUDGET = 0.03 if TEST_MODE else 0.02
+NU_BOUND = 0.05
+
+
+def no_wall_viscosity():
+    """nu and its standard error from viscosity/'s fit."""
+    fit = read_dict(latest("viscosity/postProcessing/fitSlipLength/*/fit.dat"))
+    return float(fit["nu"]), float(fit["nuError"])
 
 
 def entry(text, pattern, default=None):
@@ -55,6 +66,7 @@ def slab_means(z, values, errors, low, high, width):
 
 def main():
     sweep = read_sweep("sweep/sweep.dat")
+    nu_nw, nu_nw_err = no_wall_viscosity()
     with open("constant/dpdProperties") as f:
         props = f.read()
     a_ff = entry(props, r"fluid-fluid\s*\{[^}]*\ba\s+([^;\s]+)")
@@ -104,7 +116,8 @@ def main():
         slabs, slab_err = slab_means(z, prof["sigmaxz"], prof["sigmaxzErr"], z_low, z_high, 2 * cutoff)
         sigma_mean = np.mean(slabs)
         flat = np.max(np.abs(slabs / sigma_mean - 1.0))
-        rel_nu = nu / NU_NO_WALLS - 1.0
+        rel_nu = nu / nu_nw - 1.0
+        rel_nu_se = math.hypot(sweep["nuError"][k] / nu_nw, nu * nu_nw_err / nu_nw ** 2)
         heating = viscous_heating(eta, shear, rho, gamma_ff, cutoff)
         kT_mean = np.average(prof["kT"], weights=prof["count"])
         kT_expected = kT_set + heating
@@ -114,8 +127,11 @@ def main():
             checks += [
                 (f"shear stress flat within 5 % across the channel (a_ww = {a_ww[k]:g})", flat < 0.05,
                  f"max slab deviation {100 * flat:.2f} % (slab error ~{100 * np.mean(slab_err) / sigma_mean:.1f} %)"),
-                (f"nu = stress / (rho shear rate) within 5 % of nu without walls (a_ww = {a_ww[k]:g})",
-                 abs(rel_nu) < 0.05, f"{nu:.4f} +- {sweep['nuError'][k]:.4f} against {NU_NO_WALLS} ({100 * rel_nu:+.2f} %)"),
+                (f"nu = stress / (rho shear rate) and nu without walls: combined standard error within "
+                 f"{100 * NU_BUDGET:g} % (a_ww = {a_ww[k]:g})", rel_nu_se <= NU_BUDGET, f"{100 * rel_nu_se:.2f} %"),
+                (f"nu = stress / (rho shear rate) within {100 * NU_BOUND:g} % of nu without walls (a_ww = {a_ww[k]:g})",
+                 abs(rel_nu) <= NU_BOUND,
+                 f"{nu:.4f} +- {sweep['nuError'][k]:.4f} against {nu_nw:.4f} +- {nu_nw_err:.4f} ({100 * rel_nu:+.2f} %)"),
                 (f"mean kT within 1 % of the set kT plus the viscous heating (a_ww = {a_ww[k]:g})",
                  abs(kT_mean / kT_expected - 1.0) < 0.01,
                  f"{kT_mean:.4f} against {kT_expected:.4f} (heating {heating:+.4f})"),
@@ -129,7 +145,7 @@ def main():
             f.write(f"{aw:5g} {af:6.2f}  {bb[0]:+.4f} {bb[1]:+.4f} +- {be[0]:.4f} {be[1]:.4f}  "
                     f"{uu[0]:+.4f} {uu[1]:+.4f}  {sh:.5f} +- {she:.5f}  {et:.4f} +- {ete:.4f}  "
                     f"{nu:.4f} +- {nue:.4f}  {100 * fl:5.2f}  {kt:.4f} {kte:.4f}\n")
-        f.write(f"# nu without walls {NU_NO_WALLS} +- {NU_NO_WALLS_ERR} (tutorials/channel/poiseuille/viscosity)\n")
+        f.write(f"# nu without walls {nu_nw:.4f} +- {nu_nw_err:.4f} (viscosity/: reverse Poiseuille, the same fluid)\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
     print(open("results.dat").read(), end="")
@@ -157,7 +173,7 @@ def main():
     ax[4].set_xlabel("a_wf"); ax[4].set_ylabel("slip length"); ax[4].set_title("slip length against a_wf")
     ax[5].errorbar(a_wf, np.array([r[9] for r in rows]), yerr=np.array([r[10] for r in rows]), fmt="o-",
                    label="stress / (rho shear rate)")
-    ax[5].axhline(NU_NO_WALLS, color="k", lw=0.8, label="no walls (reverse Poiseuille)")
+    ax[5].axhline(nu_nw, color="k", lw=0.8, label="no walls (reverse Poiseuille)")
     ax[5].set_xlabel("a_wf"); ax[5].set_ylabel("nu"); ax[5].set_title("viscosity")
     for a in ax[:4]:
         a.set_xlabel("z")
