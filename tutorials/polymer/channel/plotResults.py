@@ -168,6 +168,7 @@ class Case:
         pp = latest_dir(os.path.join(path, "postProcessing/profileBins/*"))
         self.table = read_table(os.path.join(pp, "channelProfile.dat"))
         self.bead_table = read_table(os.path.join(pp, "beadProfile.dat")) if self.chains else None
+        self.fluid_table = read_table(os.path.join(pp, "fluidProfile.dat"))
         time_dir = latest_dir(os.path.join(path, "[0-9]*"))
         self.snapshot = os.path.join(time_dir, "particles.h5")
         self.prof = Bins(os.path.join(time_dir, "sampling/channelProfile.h5"))
@@ -232,6 +233,9 @@ class Case:
         for col, name in ((1, "Rg2"), (2, "Ree2"), (4, "Reex2"), (5, "spanx")):
             means[name] = Stat([data[use & (k == j), col].mean() for j in range(self.m)])
         self.Rg2, self.Ree2, self.Reex2, self.spanx = means["Rg2"], means["Ree2"], means["Reex2"], means["spanx"]
+        # R_g^2 and span by where the chain's centre lies across the channel (the whole sampling).
+        bins = np.loadtxt(os.path.join(directory, "chainBins.dat"), comments="#", ndmin=2)
+        self.chain_bins = {"z": bins[:, 0], "samples": bins[:, 1], "Rg2": bins[:, 2], "spanx": bins[:, 3]}
 
     def _log(self):
         self.steps = self.seconds = self.rate = float("nan")
@@ -436,27 +440,45 @@ def write_results(path, cases, ref, n_sweep, l_sweep, checks, test, low_g, heati
 def plot(path, cases, ref, n_sweep, l_sweep, low_g):
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, len(cases)))
     colour = {c.label: colours[k] for k, c in enumerate(cases)}
-    fig, ax = plt.subplots(3, 3, figsize=(17, 14))
+    fig = plt.figure(figsize=(22, 15))
+    grid = fig.add_gridspec(3, 4)
+    ax = np.empty((3, 4), dtype=object)
+    for i in range(3):
+        for j in range(4):
+            if not (i == 2 and j == 3):
+                ax[i, j] = fig.add_subplot(grid[i, j] if not (i == 2 and j == 2) else grid[2, 2:])
+    chain_cases = [c for c in cases if c.chains]
     for c in cases:
         t, col = c.table, colour[c.label]
         ax[0, 0].errorbar(t["z"], t["ux"], yerr=t["uxErr"], fmt="-", color=col, lw=1.2, label=f"{c.label}: U {c.U.value:.3f}")
         ax[0, 1].plot(t["z"], t["density"], "-", color=col, lw=1.2, label=c.label)
         ax[0, 2].plot(t["z"], t["kT"], "-", color=col, lw=1.2, label=f"{c.label}: bulk {c.kT.value:.4f}")
+        ax[0, 3].plot(c.fluid_table["z"], c.fluid_table["kT"], "-", color=col, lw=1.2, label=f"{c.label} fluid")
         if c.chains:
             b = c.bead_table
+            good = b["count"] > 0
+            ax[0, 3].plot(b["z"][good], b["kT"][good], "--", color=col, lw=1.0, label=f"{c.label} beads")
             ax[1, 0].errorbar(b["z"], b["density"], yerr=b["densityErr"], fmt="-", color=col, lw=1.2,
                               label=f"{c.label}: near/bulk {c.depletion.value:.3f}")
+            cb = c.chain_bins
+            ok = cb["samples"] > 0
+            ax[1, 3].plot(cb["z"][ok], cb["Rg2"][ok], "o-", color=col, ms=3, label=c.label)
     for a, title, ylabel in ((ax[0, 0], "velocity (fluid and beads)", "u_x"),
                              (ax[0, 1], "density (fluid and beads)", "number density"),
                              (ax[0, 2], "kT about the local flow (fluid and beads)", "kT"),
-                             (ax[1, 0], "bead density", "bead number density")):
+                             (ax[0, 3], "kT of the fluid (solid) and of the beads (dashed)", "kT"),
+                             (ax[1, 0], "bead density", "bead number density"),
+                             (ax[1, 3], "R_g^2 by where the chain's centre lies", "<R_g^2>")):
         a.set_title(title); a.set_xlabel("z"); a.set_ylabel(ylabel); a.legend(fontsize=7)
         for zw in ref.walls:
             a.axvline(zw, color="gray", ls=":")
-    for zb in (ref.centre - 0.25 * ref.d, ref.centre + 0.25 * ref.d):
-        ax[0, 2].axvline(zb, color="k", lw=0.6, ls="--")
-        ax[1, 0].axvline(zb, color="k", lw=0.6, ls="--")
-    ax[0, 2].axhline(KT_SET, color="k", lw=0.8)
+    for a in (ax[0, 2], ax[0, 3], ax[1, 0]):
+        for zb in (ref.centre - 0.25 * ref.d, ref.centre + 0.25 * ref.d):
+            a.axvline(zb, color="k", lw=0.6, ls="--")
+    for a in (ax[0, 2], ax[0, 3]):
+        a.axhline(KT_SET, color="k", lw=0.8)
+        a.set_ylim(0.97, 1.12)
+    ax[1, 3].set_yscale("log")
 
     # Chain size against nChain and ChainLen.
     for a, series, key, xlabel in ((ax[1, 1], n_sweep, "chains", "nChain"), (ax[1, 2], l_sweep, "length", "ChainLen")):
@@ -476,7 +498,7 @@ def plot(path, cases, ref, n_sweep, l_sweep, low_g):
         ax[2, 0].errorbar([c.beads for c in series], [c.deficit for c in series], yerr=[c.deficit_error for c in series],
                           fmt=marker, label=name)
         for c in series[1:]:
-            ax[2, 0].annotate(c.label, (c.beads, c.deficit), fontsize=7, xytext=(4, -10), textcoords="offset points")
+            ax[2, 0].annotate(c.label, (c.beads, c.deficit), fontsize=8, xytext=(4, -10), textcoords="offset points")
     ax[2, 0].set_xlabel("beads (nChain x ChainLen)"); ax[2, 0].set_ylabel("flux deficit 1 - U / U(no chains)")
     ax[2, 0].set_title("velocity deficit"); ax[2, 0].legend(fontsize=8)
     # Start-up: the log's mean velocity of the mobile particles.
@@ -488,7 +510,7 @@ def plot(path, cases, ref, n_sweep, l_sweep, low_g):
     ax[2, 1].set_xlabel("time"); ax[2, 1].set_ylabel("mean velocity of the mobile particles")
     ax[2, 1].set_title("start-up (the run's log)"); ax[2, 1].legend(fontsize=7)
     # Snapshot: the chains of the case with the longest chains, x-z, unwrapped and coloured by chain.
-    show = max(chain_cases_of(cases), key=lambda c: (c.length, c.beads))
+    show = max(chain_cases, key=lambda c: (c.length, c.beads))
     a = ax[2, 2]
     chains = chain_positions(show.snapshot)
     cmap = plt.cm.tab20
@@ -498,17 +520,19 @@ def plot(path, cases, ref, n_sweep, l_sweep, low_g):
     for k, (c, p) in enumerate(sorted(chains.items())):
         shift = length * np.floor((p[:, 0].mean() - lo[0]) / length)  # the chain's centre into the box
         a.plot(p[:, 0] - shift, p[:, 2], "-", color=cmap(k % 20), lw=0.8)
-        a.plot(p[:, 0] - shift, p[:, 2], ".", color=cmap(k % 20), ms=2)
+        a.plot(p[:, 0] - shift, p[:, 2], ".", color=cmap(k % 20), ms=2.5)
     a.axvline(lo[0], color="k", lw=0.6); a.axvline(hi[0], color="k", lw=0.6)
     for zw in show.walls:
         a.axhline(zw, color="gray", ls=":")
-    a.set_xlabel("x (unwrapped; box edges marked)"); a.set_ylabel("z")
-    a.set_title(f"{show.label}: the chains at t = {os.path.basename(os.path.dirname(show.snapshot))}, x-z")
+    a.set_xlabel("x (each chain unwrapped from its bond vectors, its centre in the box; box edges marked)")
+    a.set_ylabel("z")
+    a.set_title(f"{show.label}: the chains at t = {os.path.basename(os.path.dirname(show.snapshot))}, x-z projection, "
+                "one colour per chain")
     a.set_aspect("equal", adjustable="datalim")
     fig.suptitle(f"FENE chains in Poiseuille flow, d = {ref.d:g}, g = {ref.g:g}{' (low-g variant)' if low_g else ''}: "
                  f"no chains U = {ref.U.value:.3f}, Re = {ref.reynolds:.0f}, Ma = {ref.mach:.2f}")
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    fig.savefig(path, dpi=90)
 
 
 def chain_cases_of(cases):
