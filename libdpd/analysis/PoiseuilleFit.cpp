@@ -64,6 +64,18 @@ Viscosity combine(Viscosity a, Viscosity b) {
     return {(wa * a.value + wb * b.value) / (wa + wb), 1.0 / std::sqrt(wa + wb)};
 }
 
+ReversePoiseuilleResult reverseResult(Viscosity nu, Viscosity nu1, Viscosity nu2, double chi2PerDofBoth) {
+    ReversePoiseuilleResult r;
+    r.nu = nu.value;
+    r.nuErr = nu.error;
+    r.nuFirstHalf = nu1.value;
+    r.nuFirstHalfErr = nu1.error;
+    r.nuSecondHalf = nu2.value;
+    r.nuSecondHalfErr = nu2.error;
+    r.chi2PerDof = chi2PerDofBoth;
+    return r;
+}
+
 // The standard error of the mean of a block series, times the chi^2 factor.
 double seriesError(const std::vector<double>& values, double scale, BlockErrorInfo* info = nullptr) {
     std::vector<Eigen::VectorXd> series;
@@ -94,14 +106,10 @@ ReversePoiseuilleResult reverseFromBlocks(const Profile1D& first, const Profile1
     const Viscosity weighted{0.5 * (nu1.value + nu2.value), 0.0};
     std::vector<double> both;
     for (std::size_t k = 0; k < d1.size(); ++k) both.push_back(0.5 * (d1[k] + d2[k]));
-    ReversePoiseuilleResult r;
-    r.nu = weighted.value;
-    r.nuErr = seriesError(both, scale, &r.blockErrors);
-    r.nuFirstHalf = nu1.value;
-    r.nuFirstHalfErr = nu1.error;
-    r.nuSecondHalf = nu2.value;
-    r.nuSecondHalfErr = nu2.error;
-    r.chi2PerDof = chi2PerDof(fit1.chi2 + fit2.chi2, dof);
+    BlockErrorInfo info;
+    const double error = seriesError(both, scale, &info);
+    ReversePoiseuilleResult r = reverseResult({weighted.value, error}, nu1, nu2, chi2PerDof(fit1.chi2 + fit2.chi2, dof));
+    r.blockErrors = info;
     return r;
 }
 
@@ -199,15 +207,7 @@ ReversePoiseuilleResult fitReversePoiseuille(const Profile1D& p, double g, doubl
     const Viscosity nu2 = scaled(viscosityFromCurvature(fit2, g, +1.0), scatter);
     const Viscosity nu = combine(nu1, nu2);
 
-    ReversePoiseuilleResult r;
-    r.nu = nu.value;
-    r.nuErr = nu.error;
-    r.nuFirstHalf = nu1.value;
-    r.nuFirstHalfErr = nu1.error;
-    r.nuSecondHalf = nu2.value;
-    r.nuSecondHalfErr = nu2.error;
-    r.chi2PerDof = chi2PerDof(fit1.chi2 + fit2.chi2, dof);
-    return r;
+    return reverseResult(nu, nu1, nu2, chi2PerDof(fit1.chi2 + fit2.chi2, dof));
 }
 
 double kineticTheoryViscosity(double kT, double gamma, double rho, double rc) {

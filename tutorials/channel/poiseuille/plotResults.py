@@ -212,13 +212,14 @@ def main():
     kT_periodic_mean = np.average(periodic["kT"], weights=periodic["count"])
 
     # Checks (the criteria), written so that NaN fails. The 3 % bound on nu decides only if the
-    # combined standard error is at most 0.75 % (a 3 % difference is then 4 of them): a run noisier
-    # than that fails instead of passing more easily (measured: 0.32 % in the test mode).
+    # combined standard error is at most 1 % (a 3 % difference is then 3 of them): a run noisier than
+    # that fails instead of passing more easily. Measured, errors from the fits block by block: 0.69 %
+    # in the test mode (the channel's 0.6 % dominates), 0.01-0.1 % at full size.
     rel_nu = nu_wall / nu_ref - 1.0
     nu_sigma = math.hypot(nu_wall_err, nu_ref_err) / nu_ref
     checks = [
-        ("nu(wall fit) within 3% of nu(no walls), its standard error within 0.75%",
-         abs(rel_nu) < 0.03 and nu_sigma <= 0.0075, f"{100 * rel_nu:+.2f} % (1 sigma {100 * nu_sigma:.2f} %)"),
+        ("nu(wall fit) within 3% of nu(no walls), its standard error within 1%",
+         abs(rel_nu) < 0.03 and nu_sigma <= 0.01, f"{100 * rel_nu:+.2f} % (1 sigma {100 * nu_sigma:.2f} %)"),
         (f"kT within {100 * kT_tolerance:g}% of the no-wall fluid's at the same shear rate (channel bulk)",
          abs(heating_diff / kTset) < kT_tolerance, f"mean difference {heating_diff:+.4f} (channel mean kT "
          f"{kT_mean:.4f}, no-wall box {kT_periodic_mean:.4f})"),

@@ -38,18 +38,17 @@ def slip_mean(sweep):
     return b, err
 
 
-def monotonic_checks(label, gammas, b, err, strict):
+def monotonic_checks(label, gammas, b, err):
     """Slip grows as gamma_fw falls. Over the whole range the rise must exceed three combined standard
-    errors (decisive); each step down in gamma_fw must raise the slip length (strict: the full scene,
-    whose errors are a few hundredths) or at least not lower it by more than three standard errors
-    (the short test, whose neighbouring steps differ by about one error: a sign there is a coin toss,
-    a drop of three errors would be a real reversal)."""
+    errors (decisive); no step down in gamma_fw may lower the slip length by more than three standard
+    errors (a real reversal). Neighbouring steps may differ by less than their errors (in 3-D the slip
+    at gamma_fw 1 and 2 is the same within 0.004): their sign alone is not a check."""
     order = np.argsort(gammas)
     out = []
     for lo, hi in zip(order[:-1], order[1:]):
         step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
-        ok = step > 0 if strict else step > -3 * se
-        out.append((f"{label}: slip length {'larger' if strict else 'not decisively smaller'} at gamma_fw "
+        ok = step > -3 * se
+        out.append((f"{label}: slip length not decisively smaller at gamma_fw "
                     f"{gammas[lo]:g} than at {gammas[hi]:g}", ok, f"{step:+.4f} +- {se:.4f}"))
     lo, hi = order[0], order[-1]
     rise, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
@@ -78,17 +77,11 @@ def main():
     b3, e3 = slip_mean(s3)
     z_low, z_high = walls("constant/dpdProperties")
 
-    strict = "-test" not in sys.argv[1:]
-    checks = monotonic_checks("2-D", g2, b2, e2, strict)
-    # The short 3-D runs of the test are reported, not checked: their fitted errors (bins taken as
-    # independent) come out about five times too small. Six seeds of each test run (250 time units,
-    # d = 10, 2026-11-21) scattered by 0.07 in the slip length and 0.010 in nu, against +-0.013 and
-    # +-0.002 quoted per run, and the rise from gamma_fw 13.5 to 1 (0.10 on average, in the old and
-    # the new pair loop alike) fell short of three quoted errors in 2 of the 6 seeds. A decisive
-    # 3-D test would need ~2000 sampled time units per run.
-    untested = [] if strict else monotonic_checks("3-D", g3, b3, e3, False)[-1:]
-    if strict:
-        checks += monotonic_checks("3-D", g3, b3, e3, strict)
+    # The same checks in both modes and both dimensions. The errors come from the fit block by block
+    # (fitSlipLength: the bins move together); the test's 3-D runs sample 2000 time units, since six
+    # seeds of 250 (2026-11-21) scattered by 0.07 in the slip length against a rise of 0.10 from
+    # gamma_fw 13.5 to 1: at 2000 the rise is ~4 of its standard errors.
+    checks = monotonic_checks("2-D", g2, b2, e2) + monotonic_checks("3-D", g3, b3, e3)
     # The variants leave a gap at the wall: more fluid missing next to it than at the standard wall
     # (same gamma_fw, 4.5). A bin's density is known to ~1 %, so the depletion to ~0.005: a
     # difference of 0.1 (a tenth of a cutoff of fluid) is decisive.
@@ -113,8 +106,6 @@ def main():
         f.write(f"2-D standard wall (gamma_fw 4.5): depletion at the wall {gap_std:.3f}\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
-        for name, _, value in untested:
-            f.write(f"info   (not checked in the test: its errors run small) {name}: {value}\n")
     print(open("results.dat").read(), end="")
 
     fig, ax = plt.subplots(2, 2, figsize=(12, 8.5))

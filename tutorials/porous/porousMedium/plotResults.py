@@ -19,11 +19,13 @@ Checks, full scene (the issue's criteria):
   - the crack's centre line: relative L2 of DPD against simpleFoam < 10 %;
   - mean velocity within 10 %: meanVelocityRatio (over the compared bins) and the superficial velocity
     (Darcy permeability) ratio.
-Test mode (48 x 48, 60 time units of sampling): the same checks with each 10 % bound widened by three
-times the noise of the quantity (noiseL2 of the line, the standard error of the superficial velocity),
-and the kT bound by three times the standard error of the series' mean. Next to the grains the bound
-is the larger of 10 % of the peak and simpleFoam's own velocity there plus 3 % of the peak (in the
-small mask the continuum itself has ~11 % there), widened by three standard errors.
+Each check first asserts that the noise of its quantity is within a budget (NOISE_BUDGETS below), so
+that a run too noisy to decide fails instead of passing more easily; the bound is then fixed.
+Test mode (40 x 40 mask, 160 time units of sampling): the same checks, each bound the full one plus
+three test budgets (fixed, derived below for the shorter run). Next to the grains the bound is the
+larger of 10 % of the peak and simpleFoam's own velocity there plus 3 % of the peak (in the small mask
+the continuum itself has ~11 % there). In test mode the crack line (noise ~0.12 over 40 bins) only
+catches gross errors (a slipping or missing wall, a unit slip); the full scene decides it.
 
 Where the two disagree: each fluid bin gets the local pore size (the diameter of the largest disc in
 the fluid that covers it, from the mask) and its distance to the solid; results.dat gives the relative
@@ -43,6 +45,17 @@ sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", "../../.."), "
 from dpdResults import latest, parse_dict, read_dict, read_table  # noqa: E402
 
 test_mode = "-test" in sys.argv[1:]
+
+# Noise budgets (the largest noise at which a check still decides). Full scene, measured (README):
+# crack noiseL2 0.023-0.024, superficial velocity 0.12 % (relative), kT of the log's series 0.0005-0.0006;
+# budgets about twice that. Test (160 time units on the 40 x 40 mask; measured at 40 time units:
+# noiseL2 0.233, superficial 2.7 %, kT 0.0047, near-grain velocity 0.63 % of the peak; four times the
+# sampling halves each): budgets 1.3 x the expected. Velocity next to the grains: standard error of
+# the mean over the near-grain bins, relative to the crack's peak.
+NOISE_BUDGETS = {
+    False: {"line": 0.05, "mean": 0.003, "kT": 0.0012, "wall": 0.003},
+    True: {"line": 0.15, "mean": 0.018, "kT": 0.003, "wall": 0.004},
+}
 
 
 def read_compare(path):
@@ -211,19 +224,25 @@ def main():
 
     ratio_super = cmp["permeabilityRatio"]
     super_err = cmp["superficialVelocityDPDErr"] / cmp["superficialVelocityFVM"]
-    line_tol = 0.10 + (3 * crack["noiseL2"] if test_mode else 0.0)
-    mean_tol = 0.10 + (3 * super_err if test_mode else 0.0)
-    kT_tol = 0.035 + (3 * kT_log_err if test_mode else 0.0)
+    budget = NOISE_BUDGETS[test_mode]
+    widen = 3.0 if test_mode else 0.0  # test bounds: the full bound plus three test budgets, fixed
+    line_tol = 0.10 + widen * budget["line"]
+    mean_tol = 0.10 + widen * budget["mean"]
+    kT_tol = 0.035 + widen * budget["kT"]
     # Next to the grains: 10 % of the crack's peak. In the test's small mask the bins the grains cut
     # hold more of the flow: simpleFoam's own velocity there is ~11 % of the peak (0.0195 of 0.182),
     # so a correct no-slip run sits at the bound. There the bound is the continuum's value plus the
-    # 3 %-of-peak allowance of the next check, widened by three standard errors like every test bound;
-    # a slipping wall (velocity of the order of the pore's) is still far above it.
+    # 3 %-of-peak allowance of the next check, plus three test budgets like every test bound; a
+    # slipping wall (velocity of the order of the pore's) is still far above it.
     wall_se = np.sqrt(np.mean(grid["uxErr"][near] ** 2) / near.sum())
     wall_bound = 0.1 * u_peak
     if test_mode:
-        wall_bound = max(wall_bound, abs(u_wall_fvm) + 0.03 * u_peak) + 3 * wall_se
+        wall_bound = max(wall_bound, abs(u_wall_fvm) + 0.03 * u_peak) + widen * budget["wall"] * u_peak
+    noise = {"line": crack["noiseL2"], "mean": super_err, "kT": kT_log_err, "wall": wall_se / u_peak}
     checks = [
+        (f"noise of the {name} within its budget {budget[name]:g}", bool(noise[name] <= budget[name]), f"{noise[name]:.4g}")
+        for name in ("line", "mean", "kT", "wall")
+    ] + [
         (f"mean kT of the bins within {kT_tol:.3f} of 1", abs(kT_bins - 1) < kT_tol, f"{kT_bins:.4f}"),
         (f"mean kT of the log's series within {kT_tol:.3f} of 1",
          abs(kT_log - 1) < kT_tol, f"{kT_log:.4f} +- {kT_log_err:.4f}"),
@@ -231,7 +250,7 @@ def main():
         (f"velocity next to the grains < {wall_bound / u_peak:.1%} of the crack's peak", abs(u_wall_dpd) < wall_bound,
          f"{u_wall_dpd:.4f} (peak {u_peak:.4f})"),
         ("velocity next to the grains within 3 % of the peak of simpleFoam's there",
-         abs(u_wall_dpd - u_wall_fvm) < 0.03 * u_peak + (3 * wall_se if test_mode else 0),
+         abs(u_wall_dpd - u_wall_fvm) < 0.03 * u_peak + widen * budget["wall"] * u_peak,
          f"DPD {u_wall_dpd:.4f}, simpleFoam {u_wall_fvm:.4f} over {near.sum()} bins"),
         (f"crack centre line: relative L2 < {line_tol:.3f}", crack["L2"] < line_tol,
          f"{crack['L2']:.4f} (noise {crack['noiseL2']:.4f}, {int(crack['points'])} bins)"),
