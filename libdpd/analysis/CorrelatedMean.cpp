@@ -1,6 +1,7 @@
 #include "analysis/CorrelatedMean.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace dpd {
@@ -70,6 +71,15 @@ CorrelatedMean correlatedMean(const std::vector<Eigen::VectorXd>& series) {
     const double bias = 1.0 + (2.0 * static_cast<double>(w) + 1.0) / static_cast<double>(m);
     r.covariance = 0.5 * (sum + sum.transpose()) * (bias / static_cast<double>(m));
     return r;
+}
+
+double correlatedStandardError(const std::vector<double>& series, BlockErrorInfo* info) {
+    std::vector<Eigen::VectorXd> values;
+    values.reserve(series.size());
+    for (double v : series) values.push_back(Eigen::VectorXd::Constant(1, v));
+    const CorrelatedMean c = correlatedMean(values);
+    if (info) *info = {static_cast<int>(series.size()), c.window, c.maxTau, c.windowFound};
+    return std::sqrt(c.covariance(0, 0));
 }
 
 }  // namespace dpd

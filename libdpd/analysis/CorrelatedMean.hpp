@@ -29,4 +29,8 @@ struct CorrelatedMean {
 // Throws std::invalid_argument for fewer than 4 values or vectors of different sizes.
 CorrelatedMean correlatedMean(const std::vector<Eigen::VectorXd>& series);
 
+// The same for a series of numbers: the standard error of its mean (and, when asked, how it was found:
+// blocks, window, tau, whether the window was found).
+double correlatedStandardError(const std::vector<double>& series, BlockErrorInfo* info = nullptr);
+
 }  // namespace dpd

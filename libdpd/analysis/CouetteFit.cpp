@@ -1,5 +1,6 @@
 #include "analysis/CouetteFit.hpp"
 
+#include "analysis/CorrelatedMean.hpp"
 #include "analysis/WeightedPolyFit.hpp"
 
 #include <cmath>
@@ -34,11 +35,38 @@ CouetteFitResult fitCouette(const Profile1D& p, double yLow, double yHigh, doubl
     r.chi2PerDof = fit.dof > 0 ? fit.chi2 / fit.dof : 0.0;
     r.coefficients = {fit.coefficients(0), fit.coefficients(1)};
     r.blockErrors = fit.blockErrors;
+    for (const Eigen::VectorXd& c : fit.blockCoefficients) r.blockShearRates.push_back(c(1));
     return r;
 }
 
+namespace {
+
+// The errors of the mean stress and of eta from the blocks: per block the mean stress over the range
+// and eta linearised about the means, d eta = d sigma / gamma - sigma d gamma / gamma^2.
+void blockStressErrors(const std::vector<double>& y, const std::vector<std::vector<double>>& sigmaBlocks,
+                       const CouetteFitResult& fit, StressViscosity& v) {
+    if (sigmaBlocks.size() != fit.blockShearRates.size())
+        throw std::invalid_argument("viscosityFromStress: " + std::to_string(sigmaBlocks.size()) + " stress blocks for " +
+                                    std::to_string(fit.blockShearRates.size()) + " blocks of the fit");
+    std::vector<double> stress, eta;
+    for (std::size_t k = 0; k < sigmaBlocks.size(); ++k) {
+        if (sigmaBlocks[k].size() != y.size()) throw std::invalid_argument("viscosityFromStress: a stress block differs in size");
+        double sum = 0.0;
+        for (std::size_t i = 0; i < y.size(); ++i)
+            if (y[i] >= fit.fitLow && y[i] <= fit.fitHigh) sum += sigmaBlocks[k][i];
+        const double s = sum / v.points;
+        stress.push_back(s);
+        eta.push_back(s / fit.shearRate - v.stress * fit.blockShearRates[k] / (fit.shearRate * fit.shearRate));
+    }
+    v.stressErr = correlatedStandardError(stress);
+    v.etaErr = correlatedStandardError(eta);
+}
+
+}  // namespace
+
 StressViscosity viscosityFromStress(const std::vector<double>& y, const std::vector<double>& sigma,
-                                    const std::vector<double>& sigmaErr, const CouetteFitResult& fit, double density) {
+                                    const std::vector<double>& sigmaErr, const CouetteFitResult& fit, double density,
+                                    const std::vector<std::vector<double>>& sigmaBlocks) {
     if (sigma.size() != y.size() || sigmaErr.size() != y.size())
         throw std::invalid_argument("viscosityFromStress: the arrays differ in size");
     if (fit.shearRate == 0.0) throw std::invalid_argument("viscosityFromStress: the shear rate is zero");
@@ -56,6 +84,7 @@ StressViscosity viscosityFromStress(const std::vector<double>& y, const std::vec
     v.eta = v.stress / fit.shearRate;
     // d eta = d sigma / gamma - sigma d gamma / gamma^2, the two errors independent.
     v.etaErr = std::hypot(v.stressErr / fit.shearRate, v.stress * fit.shearRateErr / (fit.shearRate * fit.shearRate));
+    if (!sigmaBlocks.empty()) blockStressErrors(y, sigmaBlocks, fit, v);
     v.nu = v.eta / density;
     v.nuErr = v.etaErr / density;
     return v;

@@ -25,6 +25,7 @@ struct CouetteFitResult {
     int dof = 0;
     std::vector<double> coefficients;            // c0 c1
     BlockErrorInfo blockErrors;                  // blocks 0: errors from the points' errors alone
+    std::vector<double> blockShearRates;         // the line's slope in each block (with blocks)
 };
 
 // Fits the line to the points with fitLow <= y <= fitHigh. Throws std::invalid_argument when the arrays
@@ -40,11 +41,14 @@ struct StressViscosity {
     int points = 0;
 };
 
-// The mean of the stress over the bins in [fitLow, fitHigh] (error sqrt(sum err^2) / n: the bins'
-// block means are taken as independent), divided by the fitted shear rate; the relative errors of
-// stress and shear rate add in quadrature. Throws std::invalid_argument when no bin lies in range
-// or the shear rate is zero.
+// The mean of the stress over the bins in [fitLow, fitHigh], divided by the fitted shear rate. With the
+// stress of each block (sigmaBlocks[k][i], the fit's blocks) the errors come from the block series of
+// the mean stress and of eta itself (linearised in stress and shear rate, which move together);
+// without, the bins' block means are taken as independent (error sqrt(sum err^2) / n) and the
+// relative errors of stress and shear rate add in quadrature. Throws std::invalid_argument when no
+// bin lies in range, the shear rate is zero, or the blocks do not match the fit's.
 StressViscosity viscosityFromStress(const std::vector<double>& y, const std::vector<double>& sigma,
-                                    const std::vector<double>& sigmaErr, const CouetteFitResult& fit, double density);
+                                    const std::vector<double>& sigmaErr, const CouetteFitResult& fit, double density,
+                                    const std::vector<std::vector<double>>& sigmaBlocks = {});
 
 }  // namespace dpd

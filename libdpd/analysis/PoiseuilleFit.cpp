@@ -78,11 +78,7 @@ ReversePoiseuilleResult reverseResult(Viscosity nu, Viscosity nu1, Viscosity nu2
 
 // The standard error of the mean of a block series, times the chi^2 factor.
 double seriesError(const std::vector<double>& values, double scale, BlockErrorInfo* info = nullptr) {
-    std::vector<Eigen::VectorXd> series;
-    for (double v : values) series.push_back(Eigen::VectorXd::Constant(1, v));
-    const CorrelatedMean c = correlatedMean(series);
-    if (info) *info = {static_cast<int>(values.size()), c.window, c.maxTau, c.windowFound};
-    return std::sqrt(c.covariance(0, 0) * scale);
+    return correlatedStandardError(values, info) * std::sqrt(scale);
 }
 
 // Reverse Poiseuille with blocks: each half's viscosity block by block (linearised in its curvature),

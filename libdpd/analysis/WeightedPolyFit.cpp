@@ -102,10 +102,10 @@ double PolyFitResult::standardError(int k) const {
 
 double PolyFitResult::errorOf(const Eigen::VectorXd& grad) const {
     if (blockCoefficients.empty()) return std::sqrt(grad.dot(covariance * grad));
-    std::vector<Eigen::VectorXd> series;
+    std::vector<double> series;
     series.reserve(blockCoefficients.size());
-    for (const Eigen::VectorXd& c : blockCoefficients) series.push_back(Eigen::VectorXd::Constant(1, grad.dot(c)));
-    return std::sqrt(correlatedMean(series).covariance(0, 0) * blockScale);
+    for (const Eigen::VectorXd& c : blockCoefficients) series.push_back(grad.dot(c));
+    return correlatedStandardError(series) * std::sqrt(blockScale);
 }
 
 double evaluatePolynomial(const Eigen::VectorXd& coefficients, double x) {

@@ -153,4 +153,18 @@ std::vector<std::vector<double>> blockVelocities(const BinAccumulator& acc, int 
     return blocks;
 }
 
+std::vector<std::vector<double>> blockShearStress(const BinAccumulator& acc, double crossSection, int dimension) {
+    const BinLayout& L = acc.layout();
+    const double binMeasure = L.width() * L.width2() * crossSection;
+    std::vector<std::vector<double>> blocks;
+    for (std::size_t k : completeBlocks(acc)) {
+        std::vector<double> sigma;
+        for (const BinSums& b : acc.blocks()[k])
+            sigma.push_back(
+                stressEstimate(b, acc.samplesPerBlock()[k], binMeasure, dimension, acc.stressFlowAxis(), L.axis).shear);
+        blocks.push_back(std::move(sigma));
+    }
+    return blocks;
+}
+
 }  // namespace dpd

@@ -51,19 +51,19 @@ void CouetteFitMode::read(FitSlipLengthSetup& s) const {
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : s.model.cutoff;
 }
 
-void CouetteFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
+void CouetteFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const FitPoints& points,
                          FitSlipLengthResult& r) const {
     const ChannelBounds walls = channelBounds(s, t, r.axis);
     const double fitLow = s.hasFitRange ? s.fitLow : walls.low + s.exclude;
     const double fitHigh = s.hasFitRange ? s.fitHigh : walls.high - s.exclude;
     try {
-        r.couette = fitCouette(points, walls.low, walls.high, fitLow, fitHigh, walls.velocityLow, walls.velocityHigh);
+        r.couette = fitCouette(points.profile, walls.low, walls.high, fitLow, fitHigh, walls.velocityLow, walls.velocityHigh);
         r.blockErrors = r.couette.blockErrors;
         r.stressColumn = shearStressName(s.component, r.axis);
         r.hasStress = t.has(r.stressColumn) && t.has(r.stressColumn + "Err");
         if (r.hasStress)
             r.stress = viscosityFromStress(t.column(t.axisName()), t.column(r.stressColumn), t.column(r.stressColumn + "Err"),
-                                           r.couette, centralDensity(t));
+                                           r.couette, centralDensity(t), points.stressBlocks);
     } catch (const std::invalid_argument& e) {
         fitFailed(s, t, e);
     }

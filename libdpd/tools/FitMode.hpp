@@ -10,6 +10,7 @@
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dpd {
 
@@ -28,6 +29,13 @@ private:
     std::ostream& out_;
 };
 
+// What a mode fits: the table's usable points (with their blocks, when the sampling file is known)
+// and, per kept block, the shear stress of every table row (empty without blocks or stress).
+struct FitPoints {
+    Profile1D profile;
+    std::vector<std::vector<double>> stressBlocks;
+};
+
 class FitMode {
 public:
     virtual ~FitMode() = default;
@@ -36,7 +44,7 @@ public:
     // and fit range of the setup (InputError naming the file, line and keyword).
     virtual void read(FitSlipLengthSetup& s) const = 0;
     // Fits one table's usable points.
-    virtual void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
+    virtual void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const FitPoints& points,
                      FitSlipLengthResult& r) const = 0;
     // Whether the profile lies between two walls (then tunable-slip walls get a predicted slip length).
     virtual bool channel() const { return true; }

@@ -28,7 +28,7 @@ namespace {
 
 // A bin is usable when it saw particles (velocity defined) and, where errors exist, has one.
 struct Points {
-    Profile1D profile;
+    FitPoints fit;
     std::vector<std::size_t> rows;  // the table rows of the points
     int withoutVelocity = 0;
     int withoutError = 0;
@@ -56,10 +56,10 @@ Points usablePoints(const ProfileTableData& t, int component) {
             ++pts.withoutError;
             continue;
         }
-        pts.profile.y.push_back(y[i]);
-        pts.profile.u.push_back(vel[i]);
+        pts.fit.profile.y.push_back(y[i]);
+        pts.fit.profile.u.push_back(vel[i]);
         pts.rows.push_back(i);
-        if (anyError) pts.profile.uErr.push_back(err[i]);
+        if (anyError) pts.fit.profile.uErr.push_back(err[i]);
     }
     return pts;
 }
@@ -67,19 +67,26 @@ Points usablePoints(const ProfileTableData& t, int component) {
 // Fewest blocks for errors from the fit applied block by block (a covariance of three coefficients).
 constexpr std::size_t kMinErrorBlocks = 4;
 
-// Attaches the blocks in which every point saw particles; says why none are attached.
-void attachBlocks(const std::vector<std::vector<double>>& tableBlocks, Points& pts, FitSlipLengthResult& r) {
-    for (const auto& block : tableBlocks) {
+// Attaches the blocks in which every point saw particles (and their stress rows, when sampled); says
+// why none are attached.
+void attachBlocks(const TableBlocks& tableBlocks, Points& pts, FitSlipLengthResult& r) {
+    Profile1D& profile = pts.fit.profile;
+    const bool stress = tableBlocks.shearStress.size() == tableBlocks.velocities.size();
+    for (std::size_t k = 0; k < tableBlocks.velocities.size(); ++k) {
+        const auto& block = tableBlocks.velocities[k];
         std::vector<double> u;
         for (std::size_t row : pts.rows)
             if (row < block.size() && std::isfinite(block[row])) u.push_back(block[row]);
-        if (u.size() == pts.rows.size()) pts.profile.blocks.push_back(std::move(u));
+        if (u.size() != pts.rows.size()) continue;
+        profile.blocks.push_back(std::move(u));
+        if (stress) pts.fit.stressBlocks.push_back(tableBlocks.shearStress[k]);
     }
-    if (pts.profile.blocks.size() >= kMinErrorBlocks) return;
-    if (!tableBlocks.empty())
-        r.errorNote = std::to_string(pts.profile.blocks.size()) + " complete blocks saw particles in every bin, fewer than " +
+    if (profile.blocks.size() >= kMinErrorBlocks) return;
+    if (!tableBlocks.velocities.empty())
+        r.errorNote = std::to_string(profile.blocks.size()) + " complete blocks saw particles in every bin, fewer than " +
                       std::to_string(kMinErrorBlocks);
-    pts.profile.blocks.clear();
+    profile.blocks.clear();
+    pts.fit.stressBlocks.clear();
 }
 
 // gamma of the first pair of mobile species (NaN when there is none).
@@ -166,12 +173,12 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
 
     Points pts = usablePoints(t, s.component);
     r.errorNote = blocks.note;
-    attachBlocks(blocks.velocities, pts, r);
-    r.pointsUsed = static_cast<int>(pts.profile.y.size());
+    attachBlocks(blocks, pts, r);
+    r.pointsUsed = static_cast<int>(pts.fit.profile.y.size());
     r.binsWithoutVelocity = pts.withoutVelocity;
     r.binsWithoutError = pts.withoutError;
 
-    s.mode->fit(s, t, pts.profile, r);
+    s.mode->fit(s, t, pts.fit, r);
 
     r.densityCentral = centralDensity(t);
     r.gamma = firstMobileGamma(s.model);
@@ -268,6 +275,8 @@ TableBlocks readTableBlocks(const std::string& samplingFile, const ProfileTableD
         return b;
     }
     b.velocities = blockVelocities(stored.accumulator, component);
+    if (stored.accumulator.stressFlowAxis() >= 0)
+        b.shearStress = blockShearStress(stored.accumulator, stored.crossSection, stored.dimension);
     if (b.velocities.empty()) b.note = name + " has no complete block";
     return b;
 }

@@ -116,6 +116,7 @@ struct FitSlipLengthResult {
 // and why there are none when there are none.
 struct TableBlocks {
     std::vector<std::vector<double>> velocities;
+    std::vector<std::vector<double>> shearStress;  // the same blocks' shear stress per row, when sampled
     std::string note;
 };
 

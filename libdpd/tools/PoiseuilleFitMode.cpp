@@ -21,11 +21,11 @@ void PoiseuilleFitMode::read(FitSlipLengthSetup& s) const {
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : 0.0;
 }
 
-void PoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
+void PoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const FitPoints& points,
                             FitSlipLengthResult& r) const {
     const ChannelBounds walls = channelBounds(s, t, r.axis);
     try {
-        r.poiseuille = fitPoiseuille(points, r.g, walls.low, walls.high, s.exclude, walls.velocityLow, walls.velocityHigh);
+        r.poiseuille = fitPoiseuille(points.profile, r.g, walls.low, walls.high, s.exclude, walls.velocityLow, walls.velocityHigh);
         r.blockErrors = r.poiseuille.blockErrors;
     } catch (const std::invalid_argument& e) {
         fitFailed(s, t, e);

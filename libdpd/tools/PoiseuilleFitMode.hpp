@@ -9,7 +9,7 @@ class PoiseuilleFitMode : public FitMode {
 public:
     std::string name() const override;
     void read(FitSlipLengthSetup& s) const override;
-    void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
+    void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const FitPoints& points,
              FitSlipLengthResult& r) const override;
     double measuredNu(const FitSlipLengthResult& r) const override;
     void write(Dictionary& d, const FitSlipLengthResult& r) const override;

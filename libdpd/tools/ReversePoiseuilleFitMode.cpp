@@ -21,7 +21,7 @@ void ReversePoiseuilleFitMode::read(FitSlipLengthSetup& s) const {
     s.exclude = d.found("exclude") ? d.getNonNegative<double>("exclude") : 1.0;
 }
 
-void ReversePoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
+void ReversePoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const FitPoints& points,
                                    FitSlipLengthResult& r) const {
     const int gradientAxis = s.model.bodyForce->gradientAxis();
     if (r.axis != gradientAxis)
@@ -32,7 +32,7 @@ void ReversePoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTab
     r.boxLow = lo;
     r.boxLength = hi - lo;
     try {
-        r.reverse = fitReversePoiseuille(points, r.g, r.boxLow, r.boxLength, s.exclude);
+        r.reverse = fitReversePoiseuille(points.profile, r.g, r.boxLow, r.boxLength, s.exclude);
         r.blockErrors = r.reverse.blockErrors;
     } catch (const std::invalid_argument& e) {
         fitFailed(s, t, e);

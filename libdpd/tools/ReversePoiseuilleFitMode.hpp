@@ -9,7 +9,7 @@ class ReversePoiseuilleFitMode : public FitMode {
 public:
     std::string name() const override;
     void read(FitSlipLengthSetup& s) const override;
-    void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const Profile1D& points,
+    void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const FitPoints& points,
              FitSlipLengthResult& r) const override;
     bool channel() const override { return false; }
     double measuredNu(const FitSlipLengthResult& r) const override;

@@ -222,3 +222,46 @@ TEST(BlockErrors, ReversePoiseuilleErrorsCoverTheTruthWhenTheProfileMovesAsAWhol
 
 }  // namespace
 }  // namespace dpd
+
+namespace dpd {
+namespace {
+
+TEST(BlockErrors, CouetteStressViscosityCoversTheTruthWhenTheStressMovesAsAWhole) {
+    // Walls at -5 and 5 sliding at -+1, slip 0.7, eta 1.1: the stress of each block is eta times the
+    // shear rate plus a shift common to every bin (AR(1) from block to block) and noise per bin.
+    const double eta = 1.1, shear = 1.0 / 5.7;
+    const auto couette = [&](double y) { return shear * y; };
+    std::mt19937_64 rng(18);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    int hits = 0, naive = 0;
+    for (int rep = 0; rep < kRepetitions; ++rep) {
+        const Profile1D p = correlatedBlocks(couette, -5.0, 5.0, 40, 0.02, 0.02, rng);
+        std::vector<std::vector<double>> sigmaBlocks;
+        double a = 0.0;
+        for (int k = 0; k < kBlocks; ++k) {
+            a = kRho * a + std::sqrt(1.0 - kRho * kRho) * 0.01 * normal(rng);
+            std::vector<double> s;
+            for (std::size_t i = 0; i < p.y.size(); ++i) s.push_back(eta * shear + a + 0.01 * normal(rng));
+            sigmaBlocks.push_back(s);
+        }
+        std::vector<double> sigma(p.y.size(), 0.0), sigmaErr(p.y.size(), 0.0);
+        for (std::size_t i = 0; i < p.y.size(); ++i) {
+            double var = 0.0;
+            for (const auto& s : sigmaBlocks) sigma[i] += s[i] / kBlocks;
+            for (const auto& s : sigmaBlocks) var += (s[i] - sigma[i]) * (s[i] - sigma[i]);
+            sigmaErr[i] = std::sqrt(var / (kBlocks - 1) / kBlocks);
+        }
+        const CouetteFitResult fit = fitCouette(p, -5.0, 5.0, -4.0, 4.0, -1.0, 1.0);
+        const StressViscosity v = viscosityFromStress(p.y, sigma, sigmaErr, fit, 1.0, sigmaBlocks);
+        hits += std::abs(v.eta - eta) < v.etaErr;
+        const CouetteFitResult fitNaive = fitCouette(withoutBlocks(p), -5.0, 5.0, -4.0, 4.0, -1.0, 1.0);
+        const StressViscosity n = viscosityFromStress(p.y, sigma, sigmaErr, fitNaive, 1.0);
+        naive += std::abs(n.eta - eta) < n.etaErr;
+    }
+    EXPECT_GT(fraction(hits), kCoverageLow);
+    EXPECT_LT(fraction(hits), kCoverageHigh);
+    EXPECT_LT(fraction(naive), 0.45);
+}
+
+}  // namespace
+}  // namespace dpd
