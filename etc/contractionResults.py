@@ -10,8 +10,10 @@ across the channel; writes results.dat; exits non-zero when a check fails:
     well under 1 % (README, integrators), the bounce layer emits at kT, and the viscous heating of
     this slow flow is far below 1 %: 3 % is a margin, not a fit);
   - the mass flux rho ux integrated across the channel is the same at every section (steady,
-    incompressible flow: what enters the contraction leaves it), within 5 standard errors, in test
-    mode as in the full run.
+    incompressible flow: what enters the contraction leaves it): each section's standard error within
+    a budget relative to the mean flux (full 0.5 %, test 5 %: measured 0.24-0.35 % and 2.3-3.9 %,
+    2026-11-24), then every section within 5 budgets of the mean flux, fixed (a run too noisy to
+    decide fails instead of passing more easily).
 Every check is written so that a NaN fails it.
 """
 import glob
@@ -107,9 +109,13 @@ def main(title, test_mode):
     fluxes = np.array([r[1] for r in rows])
     errors = np.array([r[2] for r in rows])
     mean_flux = np.mean(fluxes)
-    allowed = 5 * errors
+    budget = 0.05 if test_mode else 0.005
+    allowed = 5 * budget * abs(mean_flux)
+    if not np.all(errors <= budget * abs(mean_flux)):
+        failures.append(f"a section's flux is too noisy to decide: standard errors {errors} against the budget "
+                        f"{budget:.1%} of the mean flux {mean_flux:.4g}")
     if not np.all(np.abs(fluxes - mean_flux) <= allowed):
-        failures.append(f"the flux differs between sections: {fluxes} (allowed deviation {allowed})")
+        failures.append(f"the flux differs between sections: {fluxes} (allowed deviation {allowed:.4g})")
     if not mean_flux > 0:
         failures.append(f"no flow along the body force: mean flux {mean_flux}")
     with open("results.dat") as f:
