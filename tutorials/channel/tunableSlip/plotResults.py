@@ -121,6 +121,13 @@ def plot(rows):
     fig.savefig("slipLength.png", dpi=120)
 
 
+# The slip length's standard error (from the fit block by block), measured 2026-11-24: mean of the
+# walls 0.050-0.055 in the test (900 sampled time units); each wall 0.052-0.105 (RMS 0.076) over five
+# seeds of the full run at gamma_L 0.5 (1000 sampled), the mean of the walls no larger. The budget,
+# 1.5 x that RMS, serves both.
+B_ERROR_BUDGET = 0.115
+
+
 def check(rows, test):
     problems = []
     for r in rows:
@@ -133,10 +140,14 @@ def check(rows, test):
             problems.append(f"slip length does not fall from gammaL {ra['gammaL']} ({a:.3f}) to {rc['gammaL']} ({c:.3f})")
     for r in rows:
         # Where the prediction applies (large slip, alpha < 2), the measurement with the layer's own
-        # density must meet it within 15 % plus 3 error bars.
+        # density must meet it within 15 % plus 3 error budgets, fixed: the slip length's standard error
+        # (from the fit block by block) must first be within B_ERROR_BUDGET, or the run cannot decide.
         if r["alphaEff"] < 2.0:
             gap = abs(r["bMeasured"] - r["bPredictedEff"])
-            if gap > 0.15 * abs(r["bPredictedEff"]) + 3.0 * r["bError"]:
+            if not r["bError"] <= B_ERROR_BUDGET:
+                problems.append(f"gammaL {r['gammaL']}: slip-length error {r['bError']:.3f} over its budget "
+                                f"{B_ERROR_BUDGET} (too noisy to test the prediction)")
+            elif not gap <= 0.15 * abs(r["bPredictedEff"]) + 3.0 * B_ERROR_BUDGET:
                 problems.append(f"gammaL {r['gammaL']}: b = {r['bMeasured']:.3f} +- {r['bError']:.3f} but "
                                 f"{r['bPredictedEff']:.3f} predicted from the layer's density")
     return problems
