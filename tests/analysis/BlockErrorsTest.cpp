@@ -27,6 +27,35 @@ constexpr double kCoverageLow = 0.60, kCoverageHigh = 0.74;
 constexpr int kBlocks = 256;
 constexpr double kRho = 0.6;  // block-to-block correlation of the common shift: tau_int = (1 + rho) / (2 (1 - rho)) = 2
 
+// One step of the AR(1) process that correlates a block with the one before (stationary deviation sd).
+double nextAutoregressive(double a, double sd, std::normal_distribution<double>& normal, std::mt19937_64& rng) {
+    return kRho * a + std::sqrt(1.0 - kRho * kRho) * sd * normal(rng);
+}
+
+// Per-bin mean of the blocks and the standard error of that mean with blocks taken as independent (as
+// profileBins writes them).
+struct BinMeans {
+    std::vector<double> mean, err;
+};
+BinMeans binMeans(const std::vector<std::vector<double>>& blocks) {
+    const std::size_t nBins = blocks.front().size();
+    BinMeans r{std::vector<double>(nBins, 0.0), std::vector<double>(nBins, 0.0)};
+    for (std::size_t i = 0; i < nBins; ++i) {
+        double sum = 0.0, var = 0.0;
+        for (const auto& b : blocks) sum += b[i];
+        r.mean[i] = sum / kBlocks;
+        for (const auto& b : blocks) var += (b[i] - r.mean[i]) * (b[i] - r.mean[i]);
+        r.err[i] = std::sqrt(var / (kBlocks - 1) / kBlocks);
+    }
+    return r;
+}
+
+void expectCoverage(int hits) {
+    const double f = static_cast<double>(hits) / kRepetitions;
+    EXPECT_GT(f, kCoverageLow);
+    EXPECT_LT(f, kCoverageHigh);
+}
+
 // Blocks of a profile u(y) on nBins bins over [yLow, yHigh]: each block is u plus a shift common to all
 // bins (AR(1) from block to block, standard deviation `shift`) plus independent noise `sigma` per bin.
 // Returns the mean profile with the per-bin standard errors of the block means (as profileBins writes
@@ -39,19 +68,14 @@ Profile1D correlatedBlocks(const std::function<double(double)>& u, double yLow, 
     for (int i = 0; i < nBins; ++i) p.y.push_back(yLow + (i + 0.5) * dy);
     double a = shift * normal(rng);
     for (int k = 0; k < kBlocks; ++k) {
-        a = kRho * a + std::sqrt(1.0 - kRho * kRho) * shift * normal(rng);
+        a = nextAutoregressive(a, shift, normal, rng);
         std::vector<double> block;
         for (double y : p.y) block.push_back(u(y) + a + sigma * normal(rng));
         p.blocks.push_back(block);
     }
-    for (int i = 0; i < nBins; ++i) {
-        double mean = 0.0, var = 0.0;
-        for (const auto& b : p.blocks) mean += b[i];
-        mean /= kBlocks;
-        for (const auto& b : p.blocks) var += (b[i] - mean) * (b[i] - mean);
-        p.u.push_back(mean);
-        p.uErr.push_back(std::sqrt(var / (kBlocks - 1) / kBlocks));
-    }
+    const BinMeans m = binMeans(p.blocks);
+    p.u = m.mean;
+    p.uErr = m.err;
     return p;
 }
 
@@ -76,7 +100,7 @@ TEST(BlockErrors, CorrelatedMeanOfAnAutoregressiveSeriesCoversTheTruth) {
         std::vector<Eigen::VectorXd> series;
         double a = normal(rng);
         for (int k = 0; k < kBlocks; ++k) {
-            a = kRho * a + std::sqrt(1.0 - kRho * kRho) * normal(rng);
+            a = nextAutoregressive(a, 1.0, normal, rng);
             series.push_back(Eigen::VectorXd::Constant(1, a));
         }
         const CorrelatedMean c = correlatedMean(series);
@@ -84,8 +108,7 @@ TEST(BlockErrors, CorrelatedMeanOfAnAutoregressiveSeriesCoversTheTruth) {
         found += c.windowFound;
         tauSum += c.maxTau;
     }
-    EXPECT_GT(fraction(hits), kCoverageLow);
-    EXPECT_LT(fraction(hits), kCoverageHigh);
+    expectCoverage(hits);
     EXPECT_EQ(found, kRepetitions);
     // tau_int from 256 values with a window ~10 scatters by ~ tau sqrt(2 (2W + 1) / m) ~ 0.8 per run,
     // 0.04 for the mean of 400; its bias (the window's tail and the mean's fluctuation) is ~ -0.1.
@@ -133,10 +156,7 @@ TEST(BlockErrors, PoiseuilleErrorsCoverTheTruthWhenTheProfileMovesAsAWhole) {
         naiveSlipVelocity += std::abs(n.lower.slipVelocity - slipTrue) < n.lower.slipVelocityErr;
         naiveSlipLength += std::abs(n.lower.slipLength - kBeta) < n.lower.slipLengthErr;
     }
-    for (int hits : {nu, slipLength, slipVelocity}) {
-        EXPECT_GT(fraction(hits), kCoverageLow);
-        EXPECT_LT(fraction(hits), kCoverageHigh);
-    }
+    for (int hits : {nu, slipLength, slipVelocity}) expectCoverage(hits);
     // Bins and blocks taken as independent: the common shift averages as if it were 40 x 2 tau_int
     // independent values, errors several times too small (coverage ~ 0.2).
     EXPECT_LT(fraction(naiveSlipVelocity), 0.45);
@@ -156,18 +176,9 @@ TEST(BlockErrors, CouetteErrorsCoverTheTruthWhenTheProfileMovesAsAWhole) {
         const CouetteFitResult n = fitCouette(withoutBlocks(p), -5.0, 5.0, -4.0, 4.0, -1.0, 1.0);
         naive += std::abs(n.lower.slipVelocity - (couette(-5.0) + 1.0)) < n.lower.slipVelocityErr;
     }
-    for (int hits : {slip, shear}) {
-        EXPECT_GT(fraction(hits), kCoverageLow);
-        EXPECT_LT(fraction(hits), kCoverageHigh);
-    }
+    for (int hits : {slip, shear}) expectCoverage(hits);
     EXPECT_LT(fraction(naive), 0.45);
 }
-
-}  // namespace
-}  // namespace dpd
-
-namespace dpd {
-namespace {
 
 TEST(BlockErrors, AnticorrelatedBlocksKeepThePlainError) {
     std::vector<Eigen::VectorXd> series;
@@ -177,12 +188,6 @@ TEST(BlockErrors, AnticorrelatedBlocksKeepThePlainError) {
     // Gamma_0 = 1, times the bias factor 1 + 1/64, over 64 values.
     EXPECT_NEAR(c.covariance(0, 0), (1.0 + 1.0 / 64.0) / 64.0, 1e-12);
 }
-
-}  // namespace
-}  // namespace dpd
-
-namespace dpd {
-namespace {
 
 TEST(BlockErrors, ReversePoiseuilleErrorsCoverTheTruthWhenTheProfileMovesAsAWhole) {
     // Box [0, 20), nu 0.3, g 0.05, +g on the first half. The common shift moves both halves; a mode
@@ -199,32 +204,20 @@ TEST(BlockErrors, ReversePoiseuilleErrorsCoverTheTruthWhenTheProfileMovesAsAWhol
         Profile1D p = correlatedBlocks(shape, 0.0, L, 40, 0.05, 0.05, rng);
         double a = 0.0;
         for (auto& block : p.blocks) {  // the curvature mode: 2 % of the profile per block, correlated
-            a = kRho * a + std::sqrt(1.0 - kRho * kRho) * 0.02 * normal(rng);
+            a = nextAutoregressive(a, 0.02, normal, rng);
             for (std::size_t i = 0; i < block.size(); ++i) block[i] += a * shape(p.y[i]);
         }
-        for (std::size_t i = 0; i < p.y.size(); ++i) {
-            double mean = 0.0, var = 0.0;
-            for (const auto& b : p.blocks) mean += b[i];
-            mean /= kBlocks;
-            for (const auto& b : p.blocks) var += (b[i] - mean) * (b[i] - mean);
-            p.u[i] = mean;
-            p.uErr[i] = std::sqrt(var / (kBlocks - 1) / kBlocks);
-        }
+        const BinMeans m = binMeans(p.blocks);
+        p.u = m.mean;
+        p.uErr = m.err;
         const ReversePoiseuilleResult r = fitReversePoiseuille(p, g, 0.0, L, 1.0);
         hits += std::abs(r.nu - nu) < r.nuErr;
         const ReversePoiseuilleResult n = fitReversePoiseuille(withoutBlocks(p), g, 0.0, L, 1.0);
         naive += std::abs(n.nu - nu) < n.nuErr;
     }
-    EXPECT_GT(fraction(hits), kCoverageLow);
-    EXPECT_LT(fraction(hits), kCoverageHigh);
+    expectCoverage(hits);
     EXPECT_LT(fraction(naive), 0.45);
 }
-
-}  // namespace
-}  // namespace dpd
-
-namespace dpd {
-namespace {
 
 TEST(BlockErrors, CouetteStressViscosityCoversTheTruthWhenTheStressMovesAsAWhole) {
     // Walls at -5 and 5 sliding at -+1, slip 0.7, eta 1.1: the stress of each block is eta times the
@@ -239,27 +232,20 @@ TEST(BlockErrors, CouetteStressViscosityCoversTheTruthWhenTheStressMovesAsAWhole
         std::vector<std::vector<double>> sigmaBlocks;
         double a = 0.0;
         for (int k = 0; k < kBlocks; ++k) {
-            a = kRho * a + std::sqrt(1.0 - kRho * kRho) * 0.01 * normal(rng);
+            a = nextAutoregressive(a, 0.01, normal, rng);
             std::vector<double> s;
             for (std::size_t i = 0; i < p.y.size(); ++i) s.push_back(eta * shear + a + 0.01 * normal(rng));
             sigmaBlocks.push_back(s);
         }
-        std::vector<double> sigma(p.y.size(), 0.0), sigmaErr(p.y.size(), 0.0);
-        for (std::size_t i = 0; i < p.y.size(); ++i) {
-            double var = 0.0;
-            for (const auto& s : sigmaBlocks) sigma[i] += s[i] / kBlocks;
-            for (const auto& s : sigmaBlocks) var += (s[i] - sigma[i]) * (s[i] - sigma[i]);
-            sigmaErr[i] = std::sqrt(var / (kBlocks - 1) / kBlocks);
-        }
+        const BinMeans sigma = binMeans(sigmaBlocks);
         const CouetteFitResult fit = fitCouette(p, -5.0, 5.0, -4.0, 4.0, -1.0, 1.0);
-        const StressViscosity v = viscosityFromStress(p.y, sigma, sigmaErr, fit, 1.0, sigmaBlocks);
+        const StressViscosity v = viscosityFromStress(p.y, sigma.mean, sigma.err, fit, 1.0, sigmaBlocks);
         hits += std::abs(v.eta - eta) < v.etaErr;
         const CouetteFitResult fitNaive = fitCouette(withoutBlocks(p), -5.0, 5.0, -4.0, 4.0, -1.0, 1.0);
-        const StressViscosity n = viscosityFromStress(p.y, sigma, sigmaErr, fitNaive, 1.0);
+        const StressViscosity n = viscosityFromStress(p.y, sigma.mean, sigma.err, fitNaive, 1.0);
         naive += std::abs(n.eta - eta) < n.etaErr;
     }
-    EXPECT_GT(fraction(hits), kCoverageLow);
-    EXPECT_LT(fraction(hits), kCoverageHigh);
+    expectCoverage(hits);
     EXPECT_LT(fraction(naive), 0.45);
 }
 
