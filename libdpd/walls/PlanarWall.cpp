@@ -137,9 +137,11 @@ WallCount PlanarWall::reflect(WallStep& s, std::uint32_t index) const {
 }
 
 void PlanarWall::completeCrossing(Particles& p, std::size_t i, const DeferredCrossing& d, const Box& box) const {
-    // Bounce-forward: to the mirrored position, with the velocity relative to the wall reversed.
+    // Bounce-forward: to the mirrored position, with the velocity relative to the wall reversed (or,
+    // reverseFrame lab, the velocity itself).
     setWrappedPosition(p, i, Eigen::Vector3d(d.x, d.y, d.z), box);
-    setVelocity(p, i, settings_.velocity - (velocityOf(p, i) - settings_.velocity));
+    const Eigen::Vector3d frame = settings_.reverseInLabFrame ? Eigen::Vector3d::Zero() : settings_.velocity;
+    setVelocity(p, i, frame - (velocityOf(p, i) - frame));
 }
 
 }  // namespace dpd

@@ -40,7 +40,7 @@ TunableSlipParameters readTunableSlip(const Dictionary& td) {
 }
 
 PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadContext& c) {
-    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha", "tunableSlip"});
+    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha", "tunableSlip", "reverseFrame"});
     PlanarWallSettings w;
     w.name = c.name;
     w.point = wd.get<Eigen::Vector3d>("point");
@@ -71,6 +71,14 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
     // The bounce layer's thickness in cutoffs (docs/walls.md 3.2 step 5: about 0.06-0.1 works).
     if (w.rule == ReflectionRule::bounceLayer) w.layer = wd.getPositive<double>("alpha") * c.cutoff;
     else if (wd.found("alpha")) wd.fail("alpha", "only a wall with reflection bounceLayer has a layer thickness alpha");
+    // Every rule reverses relative to the wall (reverseFrame wall); bounceForward may do it in the lab frame.
+    if (wd.found("reverseFrame")) {
+        const std::string frame = wd.get<std::string>("reverseFrame");
+        if (frame != "wall" && frame != "lab") wd.fail("reverseFrame", "expected wall or lab, not '" + frame + "'");
+        w.reverseInLabFrame = frame == "lab";
+        if (w.reverseInLabFrame && w.rule != ReflectionRule::bounceForward)
+            wd.fail("reverseFrame", "lab: only a wall with reflection bounceForward reverses in the lab frame");
+    }
     return w;
 }
 

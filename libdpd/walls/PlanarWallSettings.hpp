@@ -21,6 +21,9 @@ struct PlanarWallSettings {
     Eigen::Vector3d velocity{0, 0, 0};
     ReflectionRule rule = ReflectionRule::bounceBack;
     double layer = 0.0;  // bounceLayer: thickness of the layer in front of the plane (alpha x cutoff)
+    // bounceForward: the velocity reversed relative to the wall (default) or in the lab frame (a
+    // reading of the published rule that a moving wall tells apart; tutorials/channel/slipSensitivity).
+    bool reverseInLabFrame = false;
     // A smooth tunable-slip wall (Smiatek et al. 2008) acting on the fluid in front of the plane, in
     // place of frozen particles; the reflection rule stays as a safety net behind its WCA repulsion.
     bool hasTunableSlip = false;

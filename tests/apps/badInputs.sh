@@ -50,6 +50,8 @@ run unknownWallType 'sed -i "s/type plane; point (0 0 3)/type sphere; point (0 0
     "constant/dpdProperties:" "type" "expected plane"
 run unknownBodyForce 'sed -i "s/type uniform;/type gravity;/" constant/dpdProperties' \
     "constant/dpdProperties:" "bodyForce" "expected none, uniform or reversePoiseuille"
+run reverseFrameWithoutBounceForward 'sed -i "s/reflection bounceBack; }/reflection bounceBack; reverseFrame lab; }/" constant/dpdProperties' \
+    "constant/dpdProperties:" "reverseFrame" "only a wall with reflection bounceForward reverses in the lab frame"
 run hugeEndTime 'sed -i "s/^endTime 0.2;/endTime 1e30;/" system/controlDict' "system/controlDict:" "endTime" "2^53"
 
 # Snapshots.

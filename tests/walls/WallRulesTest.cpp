@@ -82,6 +82,13 @@ TEST(WallRules, BounceForwardReversesTheVelocityAfterTheStep) {
     gw.step(back);
     expectNear(pos(back), {5.010025, 5.0, 2.05015}, "bounceBack position");
     expectNear(vel(back), {-0.4, 0.4, 10.0}, "bounceBack velocity");
+    // reverseFrame lab: the same step, the velocity reversed itself, -(v + dt g) = (-1.005, 0, 10.03).
+    PlanarWallSettings lab = makeWall("w", 2, 1, ReflectionRule::bounceForward, uw);
+    lab.reverseInLabFrame = true;
+    System labFrame = lonely(lab, {5, 5, 2.05}, {1, 0, -10}, 0.01, g);
+    gw.step(labFrame);
+    expectNear(pos(labFrame), {5.010025, 5.0, 2.05015}, "bounceForward (lab frame) position");
+    expectNear(vel(labFrame), {-1.005, 0.0, 10.03}, "bounceForward (lab frame) velocity");
 }
 
 // Bounce layer 0.1 thick in front of z = 2 (wall at rest), dt = 0.001 so a particle moves 0.002 at most.
