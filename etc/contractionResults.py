@@ -1,6 +1,8 @@
 """The contraction tutorials (docs/scenes.md scene 7: tutorials/contraction/squareContraction and
 rampContraction): picture, results table and the checks of what the scene must show, the same for
-every shape. A tutorial's plotResults.py calls main(title, test_mode) in the case directory.
+every shape. A tutorial's plotResults.py calls main(title, test_mode, chains) in the tutorial
+directory: the scene is the case there, the -chains variant (FENE chains in the flow) the copy in
+chains/.
 
 Reads the 2-D fields and the sections profileBins wrote (postProcessing/profileBins/<time>/), and
 the solver's log; draws the velocity map and, at each section, velocity, density and temperature
@@ -14,6 +16,13 @@ across the channel; writes results.dat; exits non-zero when a check fails:
     a budget relative to the mean flux (full 0.5 %, test 5 %: measured 0.24-0.35 % and 2.3-3.9 %,
     2026-11-24), then every section within 5 budgets of the mean flux, fixed (a run too noisy to
     decide fails instead of passing more easily).
+The -chains variant (fluid and beads together in flowField) has the same checks, the solver's count
+of particles inside the solid covering the beads too (it counts every mobile particle), and also
+draws the beads' density (beadField) at the sections and on the grid, the chains' R_g, span and
+end-to-end extension along x by where their centres lie (chainStatistics binned along x), and the
+chains of the latest snapshot; it writes resultsChains.dat and contractionChains.png, and checks
+that the latest snapshot still holds every bead and bond insertChains made (chains x length beads,
+chains x (length - 1) bonds) and that the longest bond the log reports stays below r_max.
 Every check is written so that a NaN fails it.
 """
 import glob
@@ -22,24 +31,30 @@ import os
 import re
 import sys
 
+import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
 
-from dpdResults import read_table  # noqa: E402
+from dpdResults import read_dict, read_table  # noqa: E402
 
 
-def latest_dir():
-    dirs = glob.glob("postProcessing/profileBins/*")
+def latest_time_dir(pattern):
+    dirs = glob.glob(pattern)
     if not dirs:
-        sys.exit("plotResults: no postProcessing/profileBins/<time>")
+        sys.exit(f"plotResults: nothing matches {pattern}")
     return max(dirs, key=lambda p: float(os.path.basename(p)))
 
 
-def solver_log():
-    with open("log.dpdFoamLike") as f:
+def latest_dir(case="."):
+    return latest_time_dir(os.path.join(case, "postProcessing/profileBins/*"))
+
+
+def solver_log(case="."):
+    with open(os.path.join(case, "log.dpdFoamLike")) as f:
         text = f.read()
     inside = [int(v) for v in re.findall(r"inside walls now (\d+)", text)]
     kts = [float(v) for v in re.findall(r"kT = ([-0-9.eE+]+)", text)]
@@ -49,61 +64,50 @@ def solver_log():
     return inside[-1], kts, [(int(a), int(b)) for a, b in layer]
 
 
-def main(title, test_mode):
-    d = latest_dir()
-    grid = read_table(os.path.join(d, "flowField.dat"))
-    sections = sorted(glob.glob(os.path.join(d, "flowField_x*.dat")),
-                      key=lambda p: float(re.search(r"_x(.*)\.dat$", p).group(1)))
-    if len(sections) != 5:
-        sys.exit(f"plotResults: expected 5 sections in {d}, found {len(sections)}")
-    inside, kts, layer = solver_log()
+def read_sections(d, name):
+    """The sections profileBins wrote for the function object `name`: [(x, table)] along x."""
+    paths = glob.glob(os.path.join(d, f"{name}_x*.dat"))
+    positions = [float(re.search(r"_x(.*)\.dat$", p).group(1)) for p in paths]
+    return sorted(((x, read_table(p)) for x, p in zip(positions, paths)), key=lambda item: item[0])
 
-    # The mean kT of the fluid, weighted by the particle-samples of each bin (bins with a few
-    # particles at the walls carry little weight).
-    full = grid["count"] >= 10
-    mean_kT = np.sum(grid["kT"][full] * grid["count"][full]) / np.sum(grid["count"][full])
 
-    rows = []
-    fig, axes = plt.subplots(2, 2, figsize=(12, 8))
+def section_row(x, s):
+    """x, the mass flux rho ux dz across the section with its error, the peak ux, and the mean
+    density and kT over the bins the fluid fills."""
+    dz = s["z"][1] - s["z"][0]
+    flux = np.sum(s["density"] * s["ux"]) * dz
+    flux_err = math.sqrt(np.sum((s["density"] * s["uxErr"]) ** 2 + (s["ux"] * s["densityErr"]) ** 2)) * dz
+    fluid = s["count"] >= 10
+    return (x, flux, flux_err, np.max(s["ux"]), np.mean(s["density"][fluid]),
+            np.sum(s["kT"][fluid] * s["count"][fluid]) / np.sum(s["count"][fluid]))
+
+
+def draw_map(fig, ax, grid, column, title, cmap="viridis"):
     xs, zs = np.unique(grid["x"]), np.unique(grid["z"])
-    ux_map = grid["ux"].reshape(len(zs), len(xs))
-    im = axes[0, 0].imshow(ux_map, origin="lower", extent=[xs[0], xs[-1], zs[0], zs[-1]], aspect="equal", cmap="viridis")
-    fig.colorbar(im, ax=axes[0, 0], label="ux")
-    axes[0, 0].set_title("ux on the x-z grid (flowField.vti)")
-    for path in sections:
-        x = float(re.search(r"_x(.*)\.dat$", path).group(1))
-        s = read_table(path)
-        dz = s["z"][1] - s["z"][0]
-        flux = np.sum(s["density"] * s["ux"]) * dz
-        flux_err = math.sqrt(np.sum((s["density"] * s["uxErr"]) ** 2 + (s["ux"] * s["densityErr"]) ** 2)) * dz
+    im = ax.imshow(grid[column].reshape(len(zs), len(xs)), origin="lower", extent=[xs[0], xs[-1], zs[0], zs[-1]],
+                   aspect="equal", cmap=cmap)
+    fig.colorbar(im, ax=ax, label=column)
+    ax.set_title(title)
+
+
+def draw_sections(ax_ux, ax_rho, ax_kT, sections):
+    for x, s in sections:
         fluid = s["count"] >= 10
-        rows.append((x, flux, flux_err, np.max(s["ux"]), np.mean(s["density"][fluid]),
-                     np.sum(s["kT"][fluid] * s["count"][fluid]) / np.sum(s["count"][fluid])))
-        axes[0, 1].plot(s["z"], s["ux"], label=f"x = {x:g}")
-        axes[1, 0].plot(s["z"], s["density"], label=f"x = {x:g}")
-        axes[1, 1].plot(s["z"][fluid], s["kT"][fluid], label=f"x = {x:g}")
-    for ax, name in ((axes[0, 1], "ux"), (axes[1, 0], "density"), (axes[1, 1], "kT")):
+        ax_ux.plot(s["z"], s["ux"], label=f"x = {x:g}")
+        ax_rho.plot(s["z"], s["density"], label=f"x = {x:g}")
+        ax_kT.plot(s["z"][fluid], s["kT"][fluid], label=f"x = {x:g}")
+    for ax, name in ((ax_ux, "ux"), (ax_rho, "density"), (ax_kT, "kT")):
         ax.set_xlabel("z")
         ax.set_ylabel(name)
         ax.legend(fontsize=8)
-    axes[0, 1].set_title("velocity across the channel at the sections")
-    fig.suptitle(title + (" - test mode" if test_mode else ""))
-    fig.tight_layout()
-    fig.savefig("contraction.png", dpi=110)
+    ax_ux.set_title("velocity across the channel at the sections")
 
-    with open("results.dat", "w") as f:
-        f.write("# x flux fluxErr uxMax density kT   (flux = integral of rho ux dz at the section)\n")
-        for r in rows:
-            f.write(" ".join(f"{v:.6g}" for v in r) + "\n")
-        f.write(f"# mean kT {mean_kT:.5f}; fluid particles inside the solid at the end {inside}\n")
-        if layer:
-            returned = sum(a for a, _ in layer)
-            crossed = sum(b for _, b in layer)
-            f.write(f"# bounce layer: {returned} returned, {crossed} still crossed the surface\n")
 
+def flow_failures(rows, mean_kT, inside, test_mode, inside_what):
+    """The scene's checks (module docstring); each written so that a NaN fails it."""
     failures = []
     if inside != 0:
-        failures.append(f"{inside} fluid particles inside the solid at the end")
+        failures.append(f"{inside} {inside_what} inside the solid at the end")
     if not abs(mean_kT - 1.0) <= 0.03:
         failures.append(f"mean kT {mean_kT:.4f} differs from 1 by more than 3 %")
     fluxes = np.array([r[1] for r in rows])
@@ -118,7 +122,23 @@ def main(title, test_mode):
         failures.append(f"the flux differs between sections: {fluxes} (allowed deviation {allowed:.4g})")
     if not mean_flux > 0:
         failures.append(f"no flow along the body force: mean flux {mean_flux}")
-    with open("results.dat") as f:
+    return failures
+
+
+def write_flow_table(f, rows, mean_kT, inside, layer, extra_columns="", extra=None, inside_what="fluid particles"):
+    f.write(f"# x flux fluxErr uxMax density kT{extra_columns}   (flux = integral of rho ux dz at the section)\n")
+    for k, r in enumerate(rows):
+        values = list(r) + (list(extra[k]) if extra else [])
+        f.write(" ".join(f"{v:.6g}" for v in values) + "\n")
+    f.write(f"# mean kT {mean_kT:.5f}; {inside_what} inside the solid at the end {inside}\n")
+    if layer:
+        returned = sum(a for a, _ in layer)
+        crossed = sum(b for _, b in layer)
+        f.write(f"# bounce layer: {returned} returned, {crossed} still crossed the surface\n")
+
+
+def report(table, failures):
+    with open(table) as f:
         print(f.read(), end="")
     for msg in failures:
         print("CHECK FAILED:", msg)
@@ -126,3 +146,191 @@ def main(title, test_mode):
         sys.exit(1)
     print("All checks passed.")
 
+
+def flow_summary(case):
+    """What both the scene and the variant read: the grid, its sections, the log and the rows."""
+    d = latest_dir(case)
+    grid = read_table(os.path.join(d, "flowField.dat"))
+    sections = read_sections(d, "flowField")
+    if len(sections) != 5:
+        sys.exit(f"plotResults: expected 5 sections in {d}, found {len(sections)}")
+    inside, kts, layer = solver_log(case)
+    # The mean kT of the fluid, weighted by the particle-samples of each bin (bins with a few
+    # particles at the walls carry little weight).
+    full = grid["count"] >= 10
+    mean_kT = np.sum(grid["kT"][full] * grid["count"][full]) / np.sum(grid["count"][full])
+    rows = [section_row(x, s) for x, s in sections]
+    return d, grid, sections, inside, layer, mean_kT, rows
+
+
+def main(title, test_mode, chains=False):
+    if chains:
+        main_chains(title, test_mode)
+        return
+    d, grid, sections, inside, layer, mean_kT, rows = flow_summary(".")
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8))
+    draw_map(fig, axes[0, 0], grid, "ux", "ux on the x-z grid (flowField.vti)")
+    draw_sections(axes[0, 1], axes[1, 0], axes[1, 1], sections)
+    fig.suptitle(title + (" - test mode" if test_mode else ""))
+    fig.tight_layout()
+    fig.savefig("contraction.png", dpi=110)
+
+    with open("results.dat", "w") as f:
+        write_flow_table(f, rows, mean_kT, inside, layer)
+    report("results.dat", flow_failures(rows, mean_kT, inside, test_mode, "fluid particles"))
+
+
+# ---- The -chains variant ----------------------------------------------------------------------------
+
+
+def bead_row(x, beads, fluid):
+    """The beads at one section: their mean density over the bins the fluid fills, and their flux."""
+    dz = beads["z"][1] - beads["z"][0]
+    filled = fluid["count"] >= 10
+    # Bins no bead visited have no bead velocity (NaN) and no beads: they carry no bead flux.
+    flux = np.sum(np.where(beads["count"] > 0, beads["density"] * beads["ux"], 0.0)) * dz
+    return np.mean(beads["density"][filled]), flux
+
+
+def chain_bins(case):
+    """chainBins.dat of the latest chainStatistics write: {column: array} by chain centre along x."""
+    path = os.path.join(latest_time_dir(os.path.join(case, "postProcessing/chains/*")), "chainBins.dat")
+    data = np.loadtxt(path, comments="#", ndmin=2)
+    return {"x": data[:, 0], "samples": data[:, 1], "Rg2": data[:, 2], "span": data[:, 3], "Rx2": data[:, 4]}
+
+
+def chain_means(case):
+    """The means over the sampling in chainStatistics.dat's header: {name: (mean, error)}."""
+    path = os.path.join(latest_time_dir(os.path.join(case, "postProcessing/chains/*")), "chainStatistics.dat")
+    with open(path) as f:
+        text = f.read()
+    return {k: (float(m), float(e)) for k, m, e in re.findall(r"# mean (\S+)\s+(\S+) \+- (\S+)", text)}
+
+
+def chain_bin_row(bins, x):
+    """The chains whose centres lie in the x bin holding the section x: samples, R_g^2, span along x and
+    the rms end-to-end extension along x."""
+    width = bins["x"][1] - bins["x"][0]
+    k = int(np.clip(np.floor((x - (bins["x"][0] - 0.5 * width)) / width), 0, len(bins["x"]) - 1))
+    return bins["samples"][k], bins["Rg2"][k], bins["span"][k], math.sqrt(bins["Rx2"][k])
+
+
+def snapshot_chains(case):
+    """The latest snapshot's beads and bonds: bead positions, and each bond as the segment from its
+    first bead along its followed vector (drawn without jumps across the periodic box)."""
+    path = os.path.join(latest_time_dir(os.path.join(case, "[0-9]*")), "particles.h5")
+    with h5py.File(path, "r") as f:
+        names = [n.decode() if isinstance(n, bytes) else str(n) for n in f.attrs["speciesNames"]]
+        species = np.array(f["particles/species"])
+        position = np.array(f["particles/position"])
+        ids = np.array(f["particles/id"])
+        pairs = np.array(f["bonds/pairs"]) if "bonds/pairs" in f else np.zeros((0, 2), dtype=np.uint64)
+        vector = np.array(f["bonds/vector"]) if "bonds/vector" in f else np.zeros((0, 3))
+        chain = np.array(f["bonds/chain"]) if "bonds/chain" in f else np.zeros(0, dtype=int)
+        time = float(f.attrs["time"])
+    beads = position[species == names.index("polymer")] if "polymer" in names else np.zeros((0, 3))
+    index = {int(i): k for k, i in enumerate(ids)}
+    starts = np.array([position[index[int(a)]] for a, _ in pairs]).reshape(-1, 3)
+    return {"path": path, "time": time, "beads": beads, "starts": starts, "ends": starts + vector, "chain": chain}
+
+
+def longest_bond(case):
+    """The longest bond of any report in the solver's log, and r_max."""
+    with open(os.path.join(case, "log.dpdFoamLike")) as f:
+        found = re.findall(r"bonds: longest ([-0-9.eE+naifNAIF]+) of rMax ([0-9.eE+]+)", f.read())
+    if not found:
+        return float("nan"), float("nan")
+    return max(float(a) for a, _ in found), float(found[-1][1])
+
+
+def draw_chain_bins(ax, bins, sections):
+    ax.plot(bins["x"], np.sqrt(bins["Rg2"]), "o-", label="R_g")
+    ax.plot(bins["x"], bins["span"], "s-", label="span along x")
+    ax.plot(bins["x"], np.sqrt(bins["Rx2"]), "^-", label="rms end-to-end along x")
+    for x, _ in sections:
+        ax.axvline(x, color="grey", lw=0.8, ls="--")
+    ax.set_xlabel("x of the chain's centre (sections dashed)")
+    ax.set_ylabel("length")
+    ax.set_title("chain size and extension along the flow")
+    ax.legend(fontsize=8)
+
+
+def draw_snapshot(ax, grid, snap):
+    # The solid in grey (the bins no mobile particle visited), so that the chains stand out.
+    xs, zs = np.unique(grid["x"]), np.unique(grid["z"])
+    solid = (grid["count"] == 0).reshape(len(zs), len(xs))
+    ax.imshow(solid, origin="lower", extent=[xs[0], xs[-1], zs[0], zs[-1]], aspect="equal",
+              cmap="Greys", vmin=0, vmax=2.5)
+    ax.set_title(f"chains at t = {snap['time']:g} (solid grey)")
+    ax.set_xlabel("x")
+    ax.set_ylabel("z")
+    colours = plt.cm.tab20(np.mod(snap["chain"], 20))
+    segments = np.stack([snap["starts"][:, [0, 2]], snap["ends"][:, [0, 2]]], axis=1)
+    ax.add_collection(LineCollection(segments, colors=colours, linewidths=1.0))
+    ax.plot(snap["beads"][:, 0], snap["beads"][:, 2], ".", color="black", ms=1.5)
+
+
+def draw_bead_sections(ax, bead_sections):
+    for x, s in bead_sections:
+        ax.plot(s["z"], s["density"], label=f"x = {x:g}")
+    ax.set_xlabel("z")
+    ax.set_ylabel("bead density")
+    ax.set_title("bead density across the channel at the sections")
+    ax.legend(fontsize=8)
+
+
+def chain_failures(inserted, snap, bond):
+    """The variant's own checks: every bead and bond insertChains made is still there, and no bond
+    reached r_max (the run stops if one does: this reads what the log says)."""
+    chains, length = inserted
+    failures = []
+    if not len(snap["beads"]) == chains * length:
+        failures.append(f"{len(snap['beads'])} beads in {snap['path']}, insertChains made {chains * length}")
+    if not len(snap["starts"]) == chains * (length - 1):
+        failures.append(f"{len(snap['starts'])} bonds in {snap['path']}, insertChains made {chains * (length - 1)}")
+    if not bond[0] < bond[1]:
+        failures.append(f"longest bond {bond[0]} against r_max {bond[1]} (log.dpdFoamLike)")
+    return failures
+
+
+def write_chain_table(path, flow, extra, inserted, snap, bond, means):
+    """resultsChains.dat: the scene's table with the beads' and chains' columns, and the chains' summary."""
+    rows, mean_kT, inside, layer = flow
+    with open(path, "w") as f:
+        write_flow_table(f, rows, mean_kT, inside, layer, " beadDensity beadFlux chainSamples Rg2 spanX RxRms", extra,
+                         "mobile particles (fluid and beads)")
+        f.write("# bead columns: the beads alone at the section; chain columns: the chains whose centres lie in\n"
+                "# the x bin of chainStatistics holding the section (R_g^2, span along x, rms end-to-end along x)\n")
+        f.write(f"# chains {inserted[0]} of {inserted[1]} beads; latest snapshot {len(snap['beads'])} beads, "
+                f"{len(snap['starts'])} bonds; longest bond in the log {bond[0]:.4g} of rMax {bond[1]:g}\n")
+        f.write("# over the sampling: " + "; ".join(f"{k} {m:.5g} +- {e:.2g}" for k, (m, e) in means.items()) + "\n")
+
+
+def main_chains(title, test_mode, case="chains"):
+    d, grid, sections, inside, layer, mean_kT, rows = flow_summary(case)
+    bead_grid = read_table(os.path.join(d, "beadField.dat"))
+    bead_sections = read_sections(d, "beadField")
+    if [x for x, _ in bead_sections] != [x for x, _ in sections]:
+        sys.exit(f"plotResults: beadField's sections in {d} are not flowField's")
+    bins = chain_bins(case)
+    snap = snapshot_chains(case)
+    bond = longest_bond(case)
+    inserted = read_dict(os.path.join(case, "system/insertChainsDict"))
+    inserted = (int(inserted["chains"]), int(inserted["length"]))
+    extra = [bead_row(x, b, s) + chain_bin_row(bins, x) for (x, b), (_, s) in zip(bead_sections, sections)]
+
+    fig, axes = plt.subplots(4, 2, figsize=(13, 15))
+    draw_map(fig, axes[0, 0], grid, "ux", "ux of fluid and beads on the x-z grid (flowField.vti)")
+    draw_map(fig, axes[0, 1], bead_grid, "density", "bead density on the x-z grid (beadField.vti)", cmap="magma")
+    draw_sections(axes[1, 0], axes[1, 1], axes[2, 0], sections)
+    draw_bead_sections(axes[2, 1], bead_sections)
+    draw_chain_bins(axes[3, 0], bins, sections)
+    draw_snapshot(axes[3, 1], grid, snap)
+    fig.suptitle(f"{title}, {inserted[0]} FENE chains of {inserted[1]} beads" + (" - test mode" if test_mode else ""))
+    fig.tight_layout()
+    fig.savefig("contractionChains.png", dpi=100)
+
+    flow = (rows, mean_kT, inside, layer)
+    write_chain_table("resultsChains.dat", flow, extra, inserted, snap, bond, chain_means(case))
+    failures = flow_failures(rows, mean_kT, inside, test_mode, "mobile particles (fluid or beads)")
+    report("resultsChains.dat", failures + chain_failures(inserted, snap, bond))
