@@ -4,8 +4,11 @@
 Reads sweep/sweep.dat (one row per a_ww, written by runSweep) and each run's profile
 (sweep/<run>/postProcessing/profileBins/<time>/channelProfile.dat), draws velocity, density,
 temperature and shear stress across the channel for every a_ww (couetteSlip.png), the density near
-the walls for every a_wf (couetteSlip_nearWall.png), writes results.dat, and exits non-zero when a
-check fails.
+the walls for every a_wf (couetteSlip_nearWall.png), writes results.dat with the published table
+(published.dat) beside the measured one, and exits non-zero when a check fails.
+
+With -noSlipWall: the calibrated variant (gamma_fw 36) from sweepNoSlipWall/, written to
+resultsNoSlipWall.dat and couetteSlipNoSlipWall.png; its check is the no-slip wall at a_ww = 5.
 """
 import math
 import os
@@ -19,9 +22,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from dpdResults import latest, read_dict, read_sweep, read_table  # noqa: E402
+from dpdResults import compare_with_published, latest, published_checks, read_dict, read_published, read_sweep, read_table  # noqa: E402
 
 TEST_MODE = "-test" in sys.argv[1:]
+NO_SLIP_WALL = "-noSlipWall" in sys.argv[1:]
+CASE = "sweepNoSlipWall/couetteSlip" if NO_SLIP_WALL else "."
+SWEEP = "sweepNoSlipWall" if NO_SLIP_WALL else "sweep"
+SUFFIX = "NoSlipWall" if NO_SLIP_WALL else ""
 # The channel's nu = stress / (rho shear rate) is held to the viscosity of the same fluid without walls,
 # measured by this tutorial's own run (viscosity/: periodic reverse Poiseuille at the channel's shear
 # rate). The check decides only when the combined standard error of the two is within its budget:
@@ -29,6 +36,14 @@ TEST_MODE = "-test" in sys.argv[1:]
 # the channel's 10 x 3 x 10 run adds +-1.5-2 %, budget 3 %. Then |difference| within 5 %, fixed.
 NU_BUDGET = 0.03 if TEST_MODE else 0.02
 NU_BOUND = 0.05
+# The published comparison (issue 25): each point within max(0.3 r_c, 30 %) of the published slip
+# length. It decides only when the mean of the walls is known to a third of that point's tolerance
+# (the bound is then at least 3 standard errors wide); the paper states no errors, so the difference
+# is given in units of this run's error alone.
+PUBLISHED_ABSOLUTE, PUBLISHED_RELATIVE = 0.3, 0.30
+# The calibrated variant's no-slip check, |b| < 0.1 r_c at a_ww = 5, decides when the mean of the walls
+# is known to 0.03 (full size: 0.024 measured over 1000 sampled time units; test: ~0.01-0.02).
+NO_SLIP_BOUND, NO_SLIP_BUDGET = 0.1, 0.03
 
 
 def no_wall_viscosity():
@@ -65,12 +80,13 @@ def slab_means(z, values, errors, low, high, width):
 
 
 def main():
-    sweep = read_sweep("sweep/sweep.dat")
+    sweep = read_sweep(f"{SWEEP}/sweep.dat")
     nu_nw, nu_nw_err = no_wall_viscosity()
-    with open("constant/dpdProperties") as f:
+    with open(f"{CASE}/constant/dpdProperties") as f:
         props = f.read()
     a_ff = entry(props, r"fluid-fluid\s*\{[^}]*\ba\s+([^;\s]+)")
     gamma_ff = entry(props, r"fluid-fluid\s*\{[^}]*gamma\s+([^;\s]+)")
+    gamma_fw = entry(props, r"fluid-wall\s*\{[^}]*gamma\s+([^;\s]+)")
     kT_set = entry(props, r"^\s*kT\s+([^;\s]+)", 1.0)
     cutoff = entry(props, r"^\s*cutoff\s+([^;\s]+)", 1.0)
     zw = sorted(float(p) for p in re.findall(r"point\s*\(\s*\S+\s+\S+\s+(\S+)\s*\)", props))
@@ -87,16 +103,26 @@ def main():
     b_mean = b.mean(axis=1)
     b_mean_err = 0.5 * np.hypot(b_err[:, 0], b_err[:, 1])
 
-    profiles = [read_table(latest(f"sweep/{c}/postProcessing/profileBins/*/channelProfile.dat"))
+    profiles = [read_table(latest(f"{SWEEP}/{c}/postProcessing/profileBins/*/channelProfile.dat"))
                 for c in sweep["case"]]
 
     checks = []
-    # No slip at the first (smallest a_ww) setting: |b| < 0.1 r_c at each wall. The block error
-    # bars underestimate the wall-to-wall scatter (see above), so the bound is on the mean of the
-    # walls, whose error is ~0.01 in the test: 0.1 is then > 5 sigma from the measured value or not.
-    checks.append(("|slip length| < 0.1 r_c at the no-slip setting (a_ww = %g, mean of the walls)" % a_ww[0],
-                   abs(b_mean[0]) < 0.1 * cutoff,
-                   f"{b_mean[0]:+.4f} +- {b_mean_err[0]:.4f} (walls {b[0, 0]:+.3f}, {b[0, 1]:+.3f})"))
+    if NO_SLIP_WALL:
+        # The calibrated wall: no slip at the first (smallest a_ww) setting, on the mean of the walls (a
+        # fluctuation of the channel's mean velocity moves the two walls' slip in opposite directions).
+        checks += [
+            (f"no-slip variant: the slip length's standard error within {NO_SLIP_BUDGET:g} (a_ww = {a_ww[0]:g})",
+             b_mean_err[0] <= NO_SLIP_BUDGET, f"{b_mean_err[0]:.4f}"),
+            (f"no-slip variant: |slip length| < {NO_SLIP_BOUND:g} r_c at a_ww = {a_ww[0]:g} (mean of the walls)",
+             abs(b_mean[0]) < NO_SLIP_BOUND * cutoff,
+             f"{b_mean[0]:+.4f} +- {b_mean_err[0]:.4f} (walls {b[0, 0]:+.3f}, {b[0, 1]:+.3f})"),
+        ]
+    published = read_published("published.dat")
+    table = published["tables"]["Table 1"]
+    comparison = compare_with_published(table, "a_ww", a_ww, b_mean, b_mean_err, absolute=PUBLISHED_ABSOLUTE * cutoff,
+                                         relative=PUBLISHED_RELATIVE)
+    if not NO_SLIP_WALL and not TEST_MODE:
+        checks += published_checks(comparison, "slip length", "a_ww = {:g}")
     # Slip grows with a_wf: each step up in a_ww raises the mean slip length.
     for k in range(1, len(a_ww)):
         step = b_mean[k] - b_mean[k - 1]
@@ -137,8 +163,10 @@ def main():
                  f"{kT_mean:.4f} against {kT_expected:.4f} (heating {heating:+.4f})"),
             ]
 
-    with open("results.dat", "w") as f:
-        f.write(f"# Couette flow between sliding three-layer walls, d = {d:g}, a_ff = {a_ff:g}: one row per a_ww\n")
+    results = f"results{SUFFIX}.dat"
+    with open(results, "w") as f:
+        f.write(f"# Couette flow between sliding three-layer walls, d = {d:g}, a_ff = {a_ff:g}, gamma {gamma_ff:g}, "
+                f"gamma_fw {gamma_fw:g}{' (the calibrated no-slip variant)' if NO_SLIP_WALL else ' (published)'}: one row per a_ww\n")
         f.write("# a_ww  a_wf   slipLength(lower upper) +- err      slipVelocity(lower upper)  shearRate +- err"
                 "      eta +- err        nu +- err         stressFlat%  kT  kT_expected\n")
         for (aw, af, bb, be, uu, sh, she, et, ete, nu, nue, fl, kt, kte) in rows:
@@ -146,9 +174,20 @@ def main():
                     f"{uu[0]:+.4f} {uu[1]:+.4f}  {sh:.5f} +- {she:.5f}  {et:.4f} +- {ete:.4f}  "
                     f"{nu:.4f} +- {nue:.4f}  {100 * fl:5.2f}  {kt:.4f} {kte:.4f}\n")
         f.write(f"# nu without walls {nu_nw:.4f} +- {nu_nw_err:.4f} (viscosity/: reverse Poiseuille, the same fluid)\n")
+        f.write(f"# published: {published['source']}, Table 1 (no errors stated: differences in units of this run's error)\n")
+        if TEST_MODE or NO_SLIP_WALL:
+            f.write("# (information: this run is not the published scene"
+                    f"{' (gamma_fw 36)' if NO_SLIP_WALL else ' (the test channel: d = 10, shear rate 0.6)'})\n")
+        f.write("# a_ww  slipLength(mean of walls) +- err   published   difference  (standard errors)  "
+                "shearRate  published\n")
+        for aw, bm, be, bp, _, _ in comparison:
+            k = int(np.flatnonzero(np.isclose(a_ww, aw))[0])
+            sp = table["shearRate"][np.flatnonzero(np.isclose(table["a_ww"], aw))[0]]
+            f.write(f"published {aw:5g}  {bm:+.4f} +- {be:.4f}   {bp:.4f}   {bm - bp:+.4f}  ({(bm - bp) / be:+.1f})  "
+                    f"{sweep['shearRate'][k]:.4f}  {sp:.4f}\n")
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
-    print(open("results.dat").read(), end="")
+    print(open(results).read(), end="")
 
     colours = plt.cm.viridis(np.linspace(0, 0.9, len(profiles)))
     fig, ax = plt.subplots(2, 3, figsize=(16, 8.5))
@@ -169,7 +208,12 @@ def main():
     ax[4].errorbar(a_wf, b[:, 0], yerr=b_err[:, 0], fmt="v-", label="lower wall")
     ax[4].errorbar(a_wf, b[:, 1], yerr=b_err[:, 1], fmt="^-", label="upper wall")
     ax[4].errorbar(a_wf, b_mean, yerr=b_mean_err, fmt="ko-", label="mean")
-    ax[4].axhspan(-0.1, 0.1, color="gray", alpha=0.2, label="|b| < 0.1")
+    ax[4].plot(table["a_wf"], table["slipLength"], "rs", label="published (Table 1)")
+    _, fit = published["fits"]["slipLength"]
+    a_line = np.linspace(min(table["a_wf"]), max(table["a_wf"]), 100)
+    ax[4].plot(a_line, fit(a_line), "r--", lw=0.8, label="published fit")
+    if NO_SLIP_WALL:
+        ax[4].axhspan(-NO_SLIP_BOUND, NO_SLIP_BOUND, color="gray", alpha=0.2, label="|b| < 0.1")
     ax[4].set_xlabel("a_wf"); ax[4].set_ylabel("slip length"); ax[4].set_title("slip length against a_wf")
     ax[5].errorbar(a_wf, np.array([r[9] for r in rows]), yerr=np.array([r[10] for r in rows]), fmt="o-",
                    label="stress / (rho shear rate)")
@@ -181,9 +225,9 @@ def main():
             a.axvline(w, color="gray", ls=":")
     for a in ax:
         a.legend(fontsize=7)
-    fig.suptitle(f"Couette flow, d = {d:g}: slip against the wall-fluid repulsion (a_wf = sqrt(a_ww a_ff))")
+    fig.suptitle(f"Couette flow, d = {d:g}, gamma_fw {gamma_fw:g}: slip against the wall-fluid repulsion (a_wf = sqrt(a_ww a_ff))")
     fig.tight_layout()
-    fig.savefig("couetteSlip.png", dpi=100)
+    fig.savefig(f"couetteSlip{SUFFIX}.png", dpi=100)
 
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for k, prof in enumerate(profiles):
@@ -201,8 +245,8 @@ def main():
     ax.set_title("density near the wall for each a_wf")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig("couetteSlip_nearWall.png", dpi=100)
-    print("Written couetteSlip.png, couetteSlip_nearWall.png and results.dat")
+    fig.savefig(f"couetteSlip{SUFFIX}_nearWall.png", dpi=100)
+    print(f"Written couetteSlip{SUFFIX}.png, couetteSlip{SUFFIX}_nearWall.png and {results}")
     return 0 if all(ok for _, ok, _ in checks) else 1
 
 

@@ -1,0 +1,26 @@
+#!/bin/bash
+# Every tutorial that reproduces a paper (it ships published.dat) holds the published parameter set
+# in its dictionaries by default (calibrated settings are named variants); a case with one parameter
+# changed (gamma_fw 36, the couette tutorial's calibrated wall) is caught, naming the entry.
+#   $1: the directory of the executables, $2: the source directory
+set -u
+bin=$1
+src=$2
+. "$src/tests/shellTestFunctions" || exit 1
+export PATH="$bin:$PATH"
+check="$src/etc/checkPublishedParameters"
+
+cases=$(find "$src/tutorials" -name published.dat -printf '%h\n' | sort)
+[ -n "$cases" ] || fail "no tutorial ships a published.dat"
+for c in $cases; do
+    out=$("$check" "$c" 2>&1) || fail "$c does not hold its published parameters: $(echo "$out" | grep MISMATCH)"
+done
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/publishedParameters.XXXXXX")
+cp -r "$src/tutorials/channel/couetteSlip/"{constant,system,published.dat} "$tmp/"
+dpdDictionary "$tmp/constant/dpdProperties" -entry pairCoeffs/fluid-wall/gamma -set 36 > /dev/null
+"$check" "$tmp" > "$tmp/log" 2>&1
+expectError $? "$tmp/log" "MISMATCH $tmp/constant/dpdProperties: pairCoeffs/fluid-wall/gamma is 36, published 4.5"
+[ "$(grep -c MISMATCH "$tmp/log")" -eq 1 ] || fail "one change, $(grep -c MISMATCH "$tmp/log") mismatches: $(cat "$tmp/log")"
+rm -rf "$tmp"
+finishTests publishedParameters
