@@ -23,11 +23,13 @@ from dpdResults import latest, read_dict, read_published, read_sweep  # noqa: E4
 
 TEST_MODE = "-test" in sys.argv[1:]
 A_WW = 15.0
-# The study decides a change of 0.3 r_c (the absolute tolerance) at three standard errors when
-# the change's combined error is within 0.1 (full size: each run's mean of the walls measured to
-# 0.02-0.05 over 500 sampled time units). The test's runs (d = 10, 70 sampled time units) are only
+# Each change must be decided either way: found (|change| at least 3 standard errors) or ruled out as
+# the cause of the difference from the paper, which needs its standard error within a third of that
+# difference. At full size the published set here exceeds the paper by 0.47 at a_ww 15
+# (couetteSlip/README), so the budget is 0.15 (each run's mean of the walls is known to 0.08-0.2 over
+# the published 500 sampled time units). The test's runs (d = 10, 70 sampled time units) are only
 # asked to decide a change of 1 r_c: budget 0.33.
-DIFFERENCE_BUDGET = 0.33 if TEST_MODE else 0.1
+DIFFERENCE_BUDGET = 0.33 if TEST_MODE else 0.15
 
 WHAT = {
     "published": "the published parameters (couetteSlip's defaults)",
@@ -35,7 +37,7 @@ WHAT = {
     "lambda05": "Groot-Warren lambda 0.5 instead of 0.65",
     "denseWall": "wall lattice twice as dense: spacing 0.5 across the flow as along it (0.5 x 0.5, not 0.5 x 1)",
     "sparseWall": "wall lattice half as dense: spacing 1 along the flow as across it (1 x 1, not 0.5 x 1)",
-    "layersOnPlane": "the three layers moved 0.15 towards the fluid (first layer on the reflection plane)",
+    "layersOnPlane": "the three layers moved 0.1 towards the fluid (0.05, 0.25, 0.65 behind the reflection plane)",
     "labFrame": "bounce-forward's velocity reversed in the lab frame, not relative to the moving wall",
     "bounceBack": "bounce-back: the velocity of the step (half-kicked) reversed, not the one at the penetrated position",
     "fitRange": "the baseline's profile fitted over the central part (3 cutoffs excluded, not 1)",
@@ -77,8 +79,9 @@ def main():
             d, de = b - base_b, math.hypot(e, base_e)
             f.write(f"{name:15s} {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   {d:+.4f} +- {de:.4f}  ({d / de:+.1f})"
                     f"{'  (same data: error an upper bound)' if name == 'fitRange' else ''}  {shear:.4f}\n")
-            checks.append((f"{name}: the change's standard error within {DIFFERENCE_BUDGET:g}", de <= DIFFERENCE_BUDGET,
-                           f"{de:.4f}"))
+            checks.append((f"{name}: the change decided (at least 3 standard errors, or its standard error within "
+                           f"{DIFFERENCE_BUDGET:g})", bool(abs(d) >= 3 * de or de <= DIFFERENCE_BUDGET),
+                           f"{d:+.4f} +- {de:.4f}"))
         f.write(f"# the published set here minus the paper: {base_b - b_published:+.4f} +- {base_e:.4f}\n")
         for name, _, _, _, _, _ in rows:
             f.write(f"# {name}: {WHAT.get(name, '')}\n")
