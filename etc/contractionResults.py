@@ -39,18 +39,15 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
-from dpdResults import read_dict, read_table  # noqa: E402
-
-
-def latest_time_dir(pattern):
-    dirs = glob.glob(pattern)
-    if not dirs:
-        sys.exit(f"plotResults: nothing matches {pattern}")
-    return max(dirs, key=lambda p: float(os.path.basename(p)))
+from dpdResults import latest, read_dict, read_table  # noqa: E402
 
 
 def latest_dir(case="."):
-    return latest_time_dir(os.path.join(case, "postProcessing/profileBins/*"))
+    """The latest time directory profileBins wrote."""
+    dirs = glob.glob(os.path.join(case, "postProcessing/profileBins/*"))
+    if not dirs:
+        sys.exit(f"plotResults: no {case}/postProcessing/profileBins/<time>")
+    return max(dirs, key=lambda p: float(os.path.basename(p)))
 
 
 def solver_log(case="."):
@@ -194,14 +191,14 @@ def bead_row(x, beads, fluid):
 
 def chain_bins(case):
     """chainBins.dat of the latest chainStatistics write: {column: array} by chain centre along x."""
-    path = os.path.join(latest_time_dir(os.path.join(case, "postProcessing/chains/*")), "chainBins.dat")
+    path = latest(os.path.join(case, "postProcessing/chains/*/chainBins.dat"))
     data = np.loadtxt(path, comments="#", ndmin=2)
     return {"x": data[:, 0], "samples": data[:, 1], "Rg2": data[:, 2], "span": data[:, 3], "Rx2": data[:, 4]}
 
 
 def chain_means(case):
     """The means over the sampling in chainStatistics.dat's header: {name: (mean, error)}."""
-    path = os.path.join(latest_time_dir(os.path.join(case, "postProcessing/chains/*")), "chainStatistics.dat")
+    path = latest(os.path.join(case, "postProcessing/chains/*/chainStatistics.dat"))
     with open(path) as f:
         text = f.read()
     return {k: (float(m), float(e)) for k, m, e in re.findall(r"# mean (\S+)\s+(\S+) \+- (\S+)", text)}
@@ -218,7 +215,7 @@ def chain_bin_row(bins, x):
 def snapshot_chains(case):
     """The latest snapshot's beads and bonds: bead positions, and each bond as the segment from its
     first bead along its followed vector (drawn without jumps across the periodic box)."""
-    path = os.path.join(latest_time_dir(os.path.join(case, "[0-9]*")), "particles.h5")
+    path = latest(os.path.join(case, "[0-9]*/particles.h5"))
     with h5py.File(path, "r") as f:
         names = [n.decode() if isinstance(n, bytes) else str(n) for n in f.attrs["speciesNames"]]
         species = np.array(f["particles/species"])
