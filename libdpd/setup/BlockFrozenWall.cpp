@@ -24,7 +24,7 @@ int speciesIndex(const Dictionary& d, const DpdModel& model, bool wantFrozen) {
 }
 
 FrozenLatticeSettings readLattice(const Dictionary& wd, const DpdModel& model) {
-    wd.checkKeys({"species", "lattice", "density", "thickness", "layers", "spacing"});
+    wd.checkKeys({"species", "lattice", "density", "thickness", "layers", "spacing", "staggered"});
     FrozenLatticeSettings s;
     s.lattice = wd.get<std::string>("lattice");
     if (s.lattice != "fcc" && s.lattice != "simpleCubic" && s.lattice != "layers")
@@ -34,6 +34,9 @@ FrozenLatticeSettings readLattice(const Dictionary& wd, const DpdModel& model) {
     if (s.lattice == "layers") {
         s.layerDepths = wd.get<std::vector<double>>("layers");
         s.layerSpacing = wd.get<std::vector<double>>("spacing");
+        s.staggered = wd.getOrDefault<bool>("staggered", false);
+    } else if (wd.found("staggered")) {
+        wd.fail("staggered", "only the layers lattice takes 'staggered' (fcc staggers its planes itself)");
     }
     return s;
 }

@@ -104,9 +104,12 @@ std::vector<Eigen::Vector3d> frozenLattice(const Box& box, const PlanarWallSetti
         spacing.push_back(fittedSpacing(box.length()[f.inPlane[k]], s.layerSpacing[k]));
     }
     std::vector<Eigen::Vector3d> out;
-    for (double depth : s.layerDepths) {
-        if (depth <= 0.0) throw std::invalid_argument("layer depths must be positive (behind the wall)");
-        addLayer(out, box, wall, f, depth, spacing, {0.0, 0.0});
+    for (std::size_t k = 0; k < s.layerDepths.size(); ++k) {
+        const double depth = s.layerDepths[k];
+        if (depth < 0.0) throw std::invalid_argument("layer depths must not be negative (0 is on the wall, behind it positive)");
+        // Staggered: the second, fourth... layer in the hollows of the one before, as in a close packing.
+        const double shift = s.staggered && k % 2 == 1 ? 0.5 : 0.0;
+        addLayer(out, box, wall, f, depth, spacing, {shift, shift});
     }
     return out;
 }

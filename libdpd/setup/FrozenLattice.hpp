@@ -19,6 +19,7 @@ struct FrozenLatticeSettings {
     double thickness = 1.0;            // depth behind the plane that is filled (one cutoff is all that matters)
     std::vector<double> layerDepths;   // layers: distances behind the plane
     std::vector<double> layerSpacing;  // layers: in-plane spacing, one per in-plane active axis (increasing axis order)
+    bool staggered = false;            // layers: every second layer shifted by half a cell along each in-plane axis
 };
 
 // Positions of the frozen particles behind an axis-aligned wall. Throws std::invalid_argument with a

@@ -377,6 +377,39 @@ TEST(FrozenLattice, LayersAtTheGivenDepthsAndSpacing) {
     EXPECT_EQ(upDepths, (std::set<long>{15, 35, 75}));
 }
 
+TEST(FrozenLattice, StaggeredLayersSitInTheHollowsOfTheLayerInFront) {
+    // Two layers at 0 (on the plane) and 0.5 behind z = 3, spacing 0.5 x 1 in a 6 x 5 box: staggered,
+    // the second layer's x and y are the first's shifted by half a cell (0.25, 0.5); the first layer
+    // and the count are those of the unstaggered wall.
+    FrozenLatticeSettings s;
+    s.lattice = "layers";
+    s.layerDepths = {0.0, 0.5};
+    s.layerSpacing = {0.5, 1.0};
+    const Box box = box3(6.0, 5.0, 12.0);
+    const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+    const auto inRegister = frozenLattice(box, w, s);
+    s.staggered = true;
+    const auto staggered = frozenLattice(box, w, s);
+    ASSERT_EQ(staggered.size(), 120u);
+    ASSERT_EQ(inRegister.size(), 120u);
+    // Lattice coordinates of each point, (x - lo) / spacing - 1/4 (addLayer's quarter-cell origin):
+    // whole numbers in the front layer, whole numbers plus one half in the staggered one behind it.
+    const auto fraction = [](double u) { return u - std::floor(u); };
+    std::set<std::pair<long, long>> front, back;
+    for (const auto& r : staggered) {
+        const double depth = w.point.z() - r.z();
+        EXPECT_TRUE(std::abs(depth) < 1e-14 || std::abs(depth - 0.5) < 1e-14) << "depth " << depth;
+        const double u = (r.x() - box.lo.x()) / 0.5 - 0.25, v = (r.y() - box.lo.y()) / 1.0 - 0.25;
+        const double expected = depth < 0.25 ? 0.0 : 0.5;
+        EXPECT_NEAR(fraction(u + 0.25) - 0.25, expected, 1e-9) << "x " << r.x() << " depth " << depth;
+        EXPECT_NEAR(fraction(v + 0.25) - 0.25, expected, 1e-9) << "y " << r.y() << " depth " << depth;
+        (depth < 0.25 ? front : back).insert({std::lround(2 * u), std::lround(2 * v)});
+    }
+    EXPECT_EQ(front.size(), 60u);
+    EXPECT_EQ(back.size(), 60u);
+    for (std::size_t k = 0; k < 60; ++k) EXPECT_EQ(staggered[k], inRegister[k]);
+}
+
 TEST(FrozenLattice, RejectsImpossibleSettings) {
     const Box box = box3(6.0, 5.0, 12.0);
     FrozenLatticeSettings s;
@@ -388,5 +421,9 @@ TEST(FrozenLattice, RejectsImpossibleSettings) {
     PlanarWallSettings oblique = wall({0, 0, 3}, Eigen::Vector3d(1, 0, 1).normalized(), ReflectionRule::bounceBack);
     EXPECT_THROW(frozenLattice(box, oblique, s), std::invalid_argument);
     s.lattice = "hexagonal";
+    EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack), s), std::invalid_argument);
+    s.lattice = "layers";
+    s.layerSpacing = {0.5, 1.0};
+    s.layerDepths = {-0.1};  // in front of the wall, in the fluid
     EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack), s), std::invalid_argument);
 }
