@@ -9,6 +9,9 @@ the walls for every a_wf (couetteSlip_nearWall.png), writes results.dat with the
 
 With -noSlipWall: the calibrated variant (gamma_fw 36) from sweepNoSlipWall/, written to
 resultsNoSlipWall.dat and couetteSlipNoSlipWall.png; its check is the no-slip wall at a_ww = 5.
+With -calibratedWall: the variant whose wall is 0.9 as dense as published, from sweepCalibratedWall/,
+written to resultsCalibratedWall.dat and couetteSlipCalibratedWall.png; at full size it is held to
+the published table like the published set.
 """
 import math
 import os
@@ -25,10 +28,13 @@ sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(o
 from dpdResults import compare_with_published, latest, published_checks, read_dict, read_published, read_sweep, read_table  # noqa: E402
 
 TEST_MODE = "-test" in sys.argv[1:]
-NO_SLIP_WALL = "-noSlipWall" in sys.argv[1:]
-CASE = "sweepNoSlipWall/couetteSlip" if NO_SLIP_WALL else "."
-SWEEP = "sweepNoSlipWall" if NO_SLIP_WALL else "sweep"
-SUFFIX = "NoSlipWall" if NO_SLIP_WALL else ""
+VARIANTS = {"-noSlipWall": "the calibrated no-slip wall, gamma_fw 36",
+            "-calibratedWall": "calibrated wall: 0.9 of the published wall density, spacing 0.5556 along the flow"}
+VARIANT = next((a for a in sys.argv[1:] if a in VARIANTS), None)
+NO_SLIP_WALL = VARIANT == "-noSlipWall"
+SUFFIX = VARIANT[1].upper() + VARIANT[2:] if VARIANT else ""
+CASE = f"sweep{SUFFIX}/couetteSlip" if VARIANT else "."
+SWEEP = f"sweep{SUFFIX}"
 # The channel's nu = stress / (rho shear rate) is held to the viscosity of the same fluid without walls,
 # measured by this tutorial's own run (viscosity/: periodic reverse Poiseuille at the channel's shear
 # rate). The check decides only when the combined standard error of the two is within its budget:
@@ -166,7 +172,7 @@ def main():
     results = f"results{SUFFIX}.dat"
     with open(results, "w") as f:
         f.write(f"# Couette flow between sliding three-layer walls, d = {d:g}, a_ff = {a_ff:g}, gamma {gamma_ff:g}, "
-                f"gamma_fw {gamma_fw:g}{' (the calibrated no-slip variant)' if NO_SLIP_WALL else ' (published)'}: one row per a_ww\n")
+                f"gamma_fw {gamma_fw:g} ({VARIANTS[VARIANT] if VARIANT else 'the published parameters'}): one row per a_ww\n")
         f.write("# a_ww  a_wf   slipLength(lower upper) +- err      slipVelocity(lower upper)  shearRate +- err"
                 "      eta +- err        nu +- err         stressFlat%  kT  kT_expected\n")
         for (aw, af, bb, be, uu, sh, she, et, ete, nu, nue, fl, kt, kte) in rows:
@@ -175,9 +181,10 @@ def main():
                     f"{nu:.4f} +- {nue:.4f}  {100 * fl:5.2f}  {kt:.4f} {kte:.4f}\n")
         f.write(f"# nu without walls {nu_nw:.4f} +- {nu_nw_err:.4f} (viscosity/: reverse Poiseuille, the same fluid)\n")
         f.write(f"# published: {published['source']}, Table 1 (no errors stated: differences in units of this run's error)\n")
-        if TEST_MODE or NO_SLIP_WALL:
+        if TEST_MODE or VARIANT:
             f.write("# (information: this run is not the published scene"
-                    f"{' (gamma_fw 36)' if NO_SLIP_WALL else ' (the test channel: d = 10, shear rate 0.6)'})\n")
+                    f"{' (the test channel: d = 10, shear rate 0.6)' if TEST_MODE else ''}"
+                    f"{' (' + VARIANTS[VARIANT] + ')' if VARIANT else ''})\n")
         f.write("# a_ww  slipLength(mean of walls) +- err   published   difference  (standard errors)  "
                 "shearRate  published\n")
         for aw, bm, be, bp, _, _ in comparison:
@@ -225,7 +232,8 @@ def main():
             a.axvline(w, color="gray", ls=":")
     for a in ax:
         a.legend(fontsize=7)
-    fig.suptitle(f"Couette flow, d = {d:g}, gamma_fw {gamma_fw:g}: slip against the wall-fluid repulsion (a_wf = sqrt(a_ww a_ff))")
+    fig.suptitle(f"Couette flow, d = {d:g}, gamma_fw {gamma_fw:g}: slip against the wall-fluid repulsion (a_wf = sqrt(a_ww a_ff))"
+                 f"{' - ' + VARIANTS[VARIANT] if VARIANT else ''}")
     fig.tight_layout()
     fig.savefig(f"couetteSlip{SUFFIX}.png", dpi=100)
 
