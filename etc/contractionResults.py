@@ -160,9 +160,9 @@ def flow_summary(case):
     return d, grid, sections, inside, layer, mean_kT, rows
 
 
-def main(title, test_mode, chains=False):
+def main(title, test_mode, chains=False, low_g=False):
     if chains:
-        main_chains(title, test_mode)
+        main_chains(title, test_mode, "chainsLowG" if low_g else "chains")
         return
     d, grid, sections, inside, layer, mean_kT, rows = flow_summary(".")
     fig, axes = plt.subplots(2, 2, figsize=(12, 8))
@@ -323,11 +323,15 @@ def main_chains(title, test_mode, case="chains"):
     draw_bead_sections(axes[2, 1], bead_sections)
     draw_chain_bins(axes[3, 0], bins, sections)
     draw_snapshot(axes[3, 1], grid, snap)
-    fig.suptitle(f"{title}, {inserted[0]} FENE chains of {inserted[1]} beads" + (" - test mode" if test_mode else ""))
+    # chains/ gives resultsChains.dat and contractionChains.png, chainsLowG/ the same names with LowG.
+    suffix = case[0].upper() + case[1:]
+    with open(os.path.join(case, "constant/dpdProperties")) as f:
+        g = re.search(r"bodyForce\s*\{[^}]*value\s+\(\s*(\S+)", f.read()).group(1)
+    fig.suptitle(f"{title}, {inserted[0]} FENE chains of {inserted[1]} beads, g {g}" + (" - test mode" if test_mode else ""))
     fig.tight_layout()
-    fig.savefig("contractionChains.png", dpi=100)
+    fig.savefig(f"contraction{suffix}.png", dpi=100)
 
     flow = (rows, mean_kT, inside, layer)
-    write_chain_table("resultsChains.dat", flow, extra, inserted, snap, bond, chain_means(case))
+    write_chain_table(f"results{suffix}.dat", flow, extra, inserted, snap, bond, chain_means(case))
     failures = flow_failures(rows, mean_kT, inside, test_mode, "mobile particles (fluid or beads)")
-    report("resultsChains.dat", failures + chain_failures(inserted, snap, bond))
+    report(f"results{suffix}.dat", failures + chain_failures(inserted, snap, bond))

@@ -7,4 +7,5 @@ import sys
 sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
 from contractionResults import main  # noqa: E402
 
-main("Square contraction (docs/scenes.md scene 7)", "-test" in sys.argv[1:], chains="-chains" in sys.argv[1:])
+main("Square contraction (docs/scenes.md scene 7)", "-test" in sys.argv[1:], chains="-chains" in sys.argv[1:],
+     low_g="-lowG" in sys.argv[1:])
