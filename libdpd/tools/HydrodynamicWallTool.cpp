@@ -1,0 +1,88 @@
+#include "tools/HydrodynamicWallTool.hpp"
+
+#include "analysis/HydrodynamicWall.hpp"
+#include "core/Error.hpp"
+#include "foam/FoamCaseSpec.hpp"
+#include "io/Dictionary.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <stdexcept>
+
+namespace dpd {
+
+namespace {
+
+struct WallsMean {
+    double slip = 0.0, slipErr = 0.0;
+    double width = 0.0;
+    std::string file;
+};
+
+// The mean slip length of the two walls of one fit.dat, and the channel's geometric width.
+WallsMean readFit(const std::string& fileOrCase, const std::string& mode) {
+    WallsMean m;
+    m.file = findFitFile(fileOrCase);
+    const Dictionary fit = Dictionary::readFile(m.file);
+    if (fit.get<std::string>("mode") != mode)
+        fit.fail("mode", "is " + fit.get<std::string>("mode") + ": give the " + mode + " runs after -" + mode);
+    const auto two = [&](const char* key) {
+        const std::vector<double> v = fit.get<std::vector<double>>(key);
+        if (v.size() != 2) fit.fail(key, "expected two values, one per wall");
+        return v;
+    };
+    const std::vector<double> walls = two("wallPosition"), slip = two("slipLength"), err = two("slipLengthError");
+    m.width = walls[1] - walls[0];
+    m.slip = 0.5 * (slip[0] + slip[1]);
+    m.slipErr = 0.5 * std::hypot(err[0], err[1]);
+    return m;
+}
+
+void printList(std::ostream& out, const char* key, const std::vector<double>& values) {
+    out << std::left << std::setw(24) << key << "(";
+    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? " " : "") << values[i];
+    out << ");\n";
+}
+
+}  // namespace
+
+void printHydrodynamicWall(const HydrodynamicWallInput& in, std::ostream& out) {
+    if (in.couette.size() != in.poiseuille.size())
+        throw std::invalid_argument(std::to_string(in.couette.size()) + " Couette runs and " +
+                                    std::to_string(in.poiseuille.size()) + " Poiseuille runs: give one of each per setting");
+    std::vector<ApparentSlip> settings;
+    std::vector<double> couette, couetteErr, poiseuille, poiseuilleErr;
+    double width = 0.0;
+    std::string widthFile;
+    for (std::size_t i = 0; i < in.couette.size(); ++i) {
+        const WallsMean c = readFit(in.couette[i], "couette"), p = readFit(in.poiseuille[i], "poiseuille");
+        for (const WallsMean* m : {&c, &p}) {
+            if (widthFile.empty()) { width = m->width; widthFile = m->file; }
+            if (std::abs(m->width - width) > 1e-9 * width)
+                throw IoError(m->file + ": the walls are " + std::to_string(m->width) + " apart, in " + widthFile + " " +
+                              std::to_string(width) + ": the settings must share one channel");
+        }
+        settings.push_back({c.slip, c.slipErr, p.slip, p.slipErr});
+        couette.push_back(c.slip);
+        couetteErr.push_back(c.slipErr);
+        poiseuille.push_back(p.slip);
+        poiseuilleErr.push_back(p.slipErr);
+    }
+    const HydrodynamicWallFit fit = fitHydrodynamicWall(width, settings);
+    out << std::setprecision(8) << std::left;
+    out << std::setw(24) << "width" << width << ";\n"
+        << std::setw(24) << "halfWidth" << fit.halfWidth << ";\n"
+        << std::setw(24) << "halfWidthError" << fit.halfWidthErr << ";\n"
+        << std::setw(24) << "offset" << fit.offset << ";\n"
+        << std::setw(24) << "chi2PerDof" << fit.chi2PerDof << ";\n"
+        << std::setw(24) << "dof" << fit.dof << ";\n";
+    printList(out, "apparentSlipCouette", couette);
+    printList(out, "apparentSlipCouetteError", couetteErr);
+    printList(out, "apparentSlipPoiseuille", poiseuille);
+    printList(out, "apparentSlipPoiseuilleError", poiseuilleErr);
+    printList(out, "slipLength", fit.slipLength);
+    printList(out, "slipLengthError", fit.slipLengthErr);
+}
+
+}  // namespace dpd
