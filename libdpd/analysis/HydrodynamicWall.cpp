@@ -44,8 +44,11 @@ double bestHalfWidth(const ReachAndZero& r) {
     const double top = 2.0 * *std::max_element(r.a.begin(), r.a.end());
     const int n = 400;
     int best = 1;
-    for (int k = 1; k <= n; ++k)
-        if (chi2(r, top * k / n) < chi2(r, top * best / n)) best = k;
+    double bestChi2 = chi2(r, top / n);
+    for (int k = 2; k <= n; ++k) {
+        const double c = chi2(r, top * k / n);
+        if (c < bestChi2) { best = k; bestChi2 = c; }
+    }
     double lo = top * std::max(best - 1, 0) / n, hi = top * std::min(best + 1, n) / n;
     const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
     double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);

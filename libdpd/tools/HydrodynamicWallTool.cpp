@@ -52,7 +52,6 @@ void printHydrodynamicWall(const HydrodynamicWallInput& in, std::ostream& out) {
         throw std::invalid_argument(std::to_string(in.couette.size()) + " Couette runs and " +
                                     std::to_string(in.poiseuille.size()) + " Poiseuille runs: give one of each per setting");
     std::vector<ApparentSlip> settings;
-    std::vector<double> couette, couetteErr, poiseuille, poiseuilleErr;
     double width = 0.0;
     std::string widthFile;
     for (std::size_t i = 0; i < in.couette.size(); ++i) {
@@ -64,10 +63,6 @@ void printHydrodynamicWall(const HydrodynamicWallInput& in, std::ostream& out) {
                               std::to_string(width) + ": the settings must share one channel");
         }
         settings.push_back({c.slip, c.slipErr, p.slip, p.slipErr});
-        couette.push_back(c.slip);
-        couetteErr.push_back(c.slipErr);
-        poiseuille.push_back(p.slip);
-        poiseuilleErr.push_back(p.slipErr);
     }
     const HydrodynamicWallFit fit = fitHydrodynamicWall(width, settings);
     out << std::setprecision(8) << std::left;
@@ -77,10 +72,15 @@ void printHydrodynamicWall(const HydrodynamicWallInput& in, std::ostream& out) {
         << std::setw(24) << "offset" << fit.offset << ";\n"
         << std::setw(24) << "chi2PerDof" << fit.chi2PerDof << ";\n"
         << std::setw(24) << "dof" << fit.dof << ";\n";
-    printList(out, "apparentSlipCouette", couette);
-    printList(out, "apparentSlipCouetteError", couetteErr);
-    printList(out, "apparentSlipPoiseuille", poiseuille);
-    printList(out, "apparentSlipPoiseuilleError", poiseuilleErr);
+    const auto column = [&](double ApparentSlip::*member) {
+        std::vector<double> values;
+        for (const ApparentSlip& s : settings) values.push_back(s.*member);
+        return values;
+    };
+    printList(out, "apparentSlipCouette", column(&ApparentSlip::couette));
+    printList(out, "apparentSlipCouetteError", column(&ApparentSlip::couetteErr));
+    printList(out, "apparentSlipPoiseuille", column(&ApparentSlip::poiseuille));
+    printList(out, "apparentSlipPoiseuilleError", column(&ApparentSlip::poiseuilleErr));
     printList(out, "slipLength", fit.slipLength);
     printList(out, "slipLengthError", fit.slipLengthErr);
 }

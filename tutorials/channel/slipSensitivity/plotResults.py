@@ -61,19 +61,26 @@ def mean_of_walls(b0, b1, e0, e1):
     return 0.5 * (b0 + b1), 0.5 * math.hypot(e0, e1)
 
 
+def sweep_runs(directory):
+    """runSweep's table in DIRECTORY with the ingredient names beside it: (sweep, [(name, b lower,
+    b upper, mean of the walls, its error)] in the table's order)."""
+    sweep = read_sweep(f"{directory}/sweep.dat")
+    names = open(f"{directory}/ingredients").read().split()
+    if len(names) != len(sweep["case"]):
+        sys.exit(f"plotResults: {len(names)} ingredient names for {len(sweep['case'])} runs in {directory}")
+    runs = []
+    for k, name in enumerate(names):
+        b0, b1 = sweep["slipLength_0"][k], sweep["slipLength_1"][k]
+        b, e = mean_of_walls(b0, b1, sweep["slipLengthError_0"][k], sweep["slipLengthError_1"][k])
+        runs.append((name, b0, b1, b, e))
+    return sweep, runs
+
+
 def scene2_table(f):
     """Scene 2's rows (ingredient, gamma_fw, b lower, b upper, mean, error) and their checks, written to
     the open results file: each ingredient's change from the published set at the same gamma_fw."""
-    sweep = read_sweep("sweepScene2/sweep.dat")
-    names = open("sweepScene2/ingredients").read().split()
-    if len(names) != len(sweep["case"]):
-        sys.exit(f"plotResults: {len(names)} scene-2 ingredient names for {len(sweep['case'])} runs")
-    gammas = sweep["pairCoeffs/fluid-wall/gamma"]
-    rows = []
-    for k, name in enumerate(names):
-        b, e = mean_of_walls(sweep["slipLength_0"][k], sweep["slipLength_1"][k],
-                             sweep["slipLengthError_0"][k], sweep["slipLengthError_1"][k])
-        rows.append((name, gammas[k], sweep["slipLength_0"][k], sweep["slipLength_1"][k], b, e))
+    sweep, runs = sweep_runs("sweepScene2")
+    rows = [(name, g, b0, b1, b, e) for (name, b0, b1, b, e), g in zip(runs, sweep["pairCoeffs/fluid-wall/gamma"])]
     table = read_published(os.path.join(PROJECT, "tutorials/channel/slipGammaFw/published.dat"))["tables"]["Table 1"]
 
     def published_b(gamma):
@@ -97,7 +104,7 @@ def scene2_table(f):
                        f"{d:+.4f} +- {de:.4f}"))
     for g, (b, e) in sorted(base.items()):
         f.write(f"# scene 2, the published set here minus the paper at gamma_fw {g:g}: {b - published_b(g):+.4f} +- {e:.4f}\n")
-    for name in dict.fromkeys(names):
+    for name in dict.fromkeys(r[0] for r in rows):
         f.write(f"# scene 2, {name}: {WHAT_SCENE2.get(name, '')}\n")
     return (rows, published_b), checks
 
@@ -120,15 +127,8 @@ def scene2_plot(ax, rows, published_b):
 
 
 def main():
-    sweep = read_sweep("sweep/sweep.dat")
-    names = open("sweep/ingredients").read().split()
-    if len(names) != len(sweep["case"]):
-        sys.exit(f"plotResults: {len(names)} ingredient names for {len(sweep['case'])} runs")
-    rows = []
-    for k, name in enumerate(names):
-        b, e = mean_of_walls(sweep["slipLength_0"][k], sweep["slipLength_1"][k],
-                             sweep["slipLengthError_0"][k], sweep["slipLengthError_1"][k])
-        rows.append((name, sweep["slipLength_0"][k], sweep["slipLength_1"][k], b, e, sweep["shearRate"][k]))
+    sweep, runs = sweep_runs("sweep")
+    rows = [run + (shear,) for run, shear in zip(runs, sweep["shearRate"])]
     fit = read_dict(latest("sweep/fitRange/postProcessing/fitSlipLength/*/fit.dat"))
     b, e = mean_of_walls(fit["slipLength"][0], fit["slipLength"][1], fit["slipLengthError"][0], fit["slipLengthError"][1])
     rows.append(("fitRange", fit["slipLength"][0], fit["slipLength"][1], b, e, fit["shearRate"]))
