@@ -109,4 +109,10 @@ expectError $? log.bad7 "the command failed in bad/base_endTime6"
     fail "sweep 6 table: $(cat base/copies/nested/sweep.dat 2>/dev/null)"
 [ -e base/copies/nested/base_endTime500/copies ] && fail "the copies' directory was copied into a copy"
 
+# 7. A second sweep of the same case: the first sweep's copies (a directory of cases) stay out of it.
+( cd base && runSweep -case . -dir second -entry system/controlDict endTime -values 600 -collect nu \
+      -- fakeRun ) > log.second 2>&1 || fail "sweep 7 failed: $(cat log.second)"
+[ -d base/second/base_endTime600 ] || fail "sweep 7 made no copy: $(cat log.second)"
+[ -e base/second/base_endTime600/copies ] && fail "the first sweep's copies were copied into the second's"
+
 finishTests runSweep

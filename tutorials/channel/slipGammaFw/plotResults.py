@@ -6,6 +6,11 @@ and each run's profile, draws the slip length and the fitted viscosity against g
 3-D), the velocity profiles, and the density at the wall of the standard wall against the two
 variants (slipGammaFw.png), writes results.dat with the published table (published.dat) beside the
 measured one, and exits non-zero when a check fails.
+
+With -planeNearRow: the named variant whose wall rows sit 0.14 and 0.717 behind the bounce-back plane,
+from sweepPlaneNearRow/, written to resultsPlaneNearRow.dat and slipGammaFwPlaneNearRow.png, with the
+same monotonic checks and the published comparison (full size), the published scene's runs drawn
+beside it when they exist.
 """
 import math
 import os
@@ -22,6 +27,7 @@ sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(o
 from dpdResults import compare_with_published, latest, published_checks, read_published, read_sweep, read_table  # noqa: E402
 
 TEST_MODE = "-test" in sys.argv[1:]
+PLANE_NEAR_ROW = "-planeNearRow" in sys.argv[1:]
 # The published comparison (issue 25), on the 2-D runs (the published scene): each point within
 # max(0.3 r_c, 30 %) of the published slip length, decided only when the mean of the walls is known to
 # a third of that point's tolerance. The paper states no errors: differences are given in units of
@@ -103,8 +109,7 @@ def main():
                        gap > gap_std + 0.1, f"{gap:.3f} against {gap_std:.3f}"))
 
     published = read_published("published.dat")
-    comparison = compare_with_published(published["tables"]["Table 1"], "gamma_fw", g2, b2, e2,
-                                        absolute=PUBLISHED_ABSOLUTE, relative=PUBLISHED_RELATIVE)
+    comparison = published_comparison(published, g2, b2, e2)
     if not TEST_MODE:
         checks += published_checks(comparison, "2-D slip length", "gamma_fw {:g}")
 
@@ -119,11 +124,7 @@ def main():
             f.write(f"2-D {name} (gamma_fw 4.5): b {sv['slipLength_0'][k]:+.4f} {sv['slipLength_1'][k]:+.4f}"
                     f"  nu {sv['nu'][k]:.4f} +- {sv['nuError'][k]:.4f}  depletion at the wall {gaps[k]:.3f}\n")
         f.write(f"2-D standard wall (gamma_fw 4.5): depletion at the wall {gap_std:.3f}\n")
-        f.write(f"# published: {published['source']}, Table 1 (no errors stated: differences in units of this run's "
-                f"error){' (information: the test channel, d = 10, is not the published scene)' if TEST_MODE else ''}\n")
-        f.write("# gamma_fw  2-D slipLength (mean of walls) +- err   published   difference  (standard errors)\n")
-        for g, b, e, p, _, _ in comparison:
-            f.write(f"published {g:5g}  {b:+.4f} +- {e:.4f}   {p:.4f}   {b - p:+.4f}  ({(b - p) / e:+.1f})\n")
+        write_comparison(f, published, comparison)
         for name, ok, value in checks:
             f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
     print(open("results.dat").read(), end="")
@@ -163,5 +164,69 @@ def main():
     return 0 if all(ok for _, ok, _ in checks) else 1
 
 
+def published_comparison(published, gammas, b, err):
+    return compare_with_published(published["tables"]["Table 1"], "gamma_fw", gammas, b, err,
+                                  absolute=PUBLISHED_ABSOLUTE, relative=PUBLISHED_RELATIVE)
+
+
+def write_comparison(f, published, comparison):
+    f.write(f"# published: {published['source']}, Table 1 (no errors stated: differences in units of this run's "
+            f"error){' (information: the test channel, d = 10, is not the published scene)' if TEST_MODE else ''}\n")
+    f.write("# gamma_fw  2-D slipLength (mean of walls) +- err   published   difference  (standard errors)\n")
+    for g, b, e, p, _, _ in comparison:
+        f.write(f"published {g:5g}  {b:+.4f} +- {e:.4f}   {p:.4f}   {b - p:+.4f}  ({(b - p) / e:+.1f})\n")
+
+
+def main_plane_near_row():
+    """The named variant: its sweep against the paper, with the published wall's runs beside it."""
+    sv = read_sweep("sweepPlaneNearRow/sweep.dat")
+    gv = sv["pairCoeffs/fluid-wall/gamma"]
+    bv, ev = slip_mean(sv)
+    z_low, z_high = walls("constant/dpdProperties")
+    published = read_published("published.dat")
+    comparison = published_comparison(published, gv, bv, ev)
+    checks = monotonic_checks("2-D, plane near the row", gv, bv, ev)
+    if not TEST_MODE:
+        checks += published_checks(comparison, "2-D slip length (plane near the row)", "gamma_fw {:g}")
+
+    with open("resultsPlaneNearRow.dat", "w") as f:
+        f.write(f"# Slip by gamma_fw, 2-D Poiseuille, d = {z_high - z_low:g}, the wall's rows 0.14 and 0.717 behind "
+                "the bounce-back plane\n# (named variant; published: 0.289 and 0.866): slip length (lower upper, "
+                "mean of the walls) and nu of the parabola fit\n")
+        for k in range(len(gv)):
+            f.write(f"2-D planeNearRow gamma_fw {gv[k]:5g}  b {sv['slipLength_0'][k]:+.4f} {sv['slipLength_1'][k]:+.4f}"
+                    f"  mean {bv[k]:+.4f} +- {ev[k]:.4f}  nu {sv['nu'][k]:.4f} +- {sv['nuError'][k]:.4f}"
+                    f"  slip velocity {0.5 * (sv['slipVelocity_0'][k] + sv['slipVelocity_1'][k]):.4f}\n")
+        write_comparison(f, published, comparison)
+        for name, ok, value in checks:
+            f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
+    print(open("resultsPlaneNearRow.dat").read(), end="")
+
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4.5))
+    ax[0].errorbar(gv, bv, yerr=ev, fmt="o-", label="rows 0.14 / 0.717 behind the plane (variant)")
+    if os.path.exists("sweep2D/sweep.dat"):
+        s2 = read_sweep("sweep2D/sweep.dat")
+        b2, e2 = slip_mean(s2)
+        ax[0].errorbar(s2["pairCoeffs/fluid-wall/gamma"], b2, yerr=e2, fmt="s--", label="rows 0.289 / 0.866 (published wall)")
+    table = published["tables"]["Table 1"]
+    ax[0].plot(table["gamma_fw"], table["slipLength"], "rD", label="published (2-D, Table 1)")
+    ax[0].set_xscale("log"); ax[0].set_xlabel("gamma_fw"); ax[0].set_ylabel("slip length (mean of the walls)")
+    ax[0].set_title("slip length against gamma_fw")
+    colours = plt.cm.viridis(np.linspace(0, 0.9, len(gv)))
+    for k, c in enumerate(sv["case"]):
+        p = profile("sweepPlaneNearRow", c)
+        ax[1].errorbar(p["z"], p["ux"], yerr=p["uxErr"], fmt="o", ms=2, color=colours[k], label=f"gamma_fw {gv[k]:g}")
+    for w in (z_low, z_high):
+        ax[1].axvline(w, color="gray", ls=":")
+    ax[1].set_xlabel("z"); ax[1].set_ylabel("u_x"); ax[1].set_title("velocity profiles (variant)")
+    for a in ax:
+        a.legend(fontsize=8)
+    fig.suptitle("Slip by gamma_fw with the wall's rows nearer the bounce-back plane (named variant)")
+    fig.tight_layout()
+    fig.savefig("slipGammaFwPlaneNearRow.png", dpi=100)
+    print("Written slipGammaFwPlaneNearRow.png and resultsPlaneNearRow.dat")
+    return 0 if all(ok for _, ok, _ in checks) else 1
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main_plane_near_row() if PLANE_NEAR_ROW else main())
