@@ -185,7 +185,7 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     r.nuKineticTheory = std::isfinite(r.gamma) && r.gamma > 0.0 && std::isfinite(r.densityCentral) && r.densityCentral > 0.0
                             ? kineticTheoryViscosity(s.model.kT, r.gamma, r.densityCentral, s.model.cutoff)
                             : std::numeric_limits<double>::quiet_NaN();
-    if (s.mode->channel()) predictSlip(s, t, r);
+    if (s.mode->channel() && s.predictTunableSlip) predictSlip(s, t, r);
     return r;
 }
 
@@ -281,29 +281,36 @@ TableBlocks readTableBlocks(const std::string& samplingFile, const ProfileTableD
     return b;
 }
 
+std::string profileTablePath(const std::string& caseDir, const std::string& time, const std::string& profile) {
+    return (fs::path(caseDir) / "postProcessing" / "profileBins" / time / (profile + ".dat")).string();
+}
+
+TimesWithInput selectProfileTimes(const FitSlipLengthOptions& o, const Dictionary& dict, const std::string& profile) {
+    const auto tableOf = [&](const TimeDirectory& t) { return profileTablePath(o.caseDir, t.name, profile); };
+    return selectTimesWithInput(
+        o.caseDir, o.time, o.latestTime, [&](const TimeDirectory& t) { return fs::exists(tableOf(t)); },
+        [&](const TimeDirectory& t) {
+            throw InputError(dict.fileName(), dict.lineOf("profile"), "profile",
+                             "no profile table " + tableOf(t) + " (run profileBins first)");
+        },
+        [&](const std::vector<std::string>&) {
+            throw InputError(dict.fileName(), dict.lineOf("profile"), "profile",
+                             "no time of case '" + o.caseDir + "' has the profile table postProcessing/profileBins/<time>/" +
+                                 profile + ".dat (run profileBins first)");
+        });
+}
+
 std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o, std::ostream& out) {
     const fs::path caseDir(o.caseDir);
     const Dictionary dict = Dictionary::readFile((caseDir / "system" / "fitSlipLengthDict").string());
     const Dictionary props = Dictionary::readFile((caseDir / "constant" / "dpdProperties").string());
     const FitSlipLengthSetup setup = readFitSlipLengthSetup(dict, props);
 
-    const auto tableOf = [&](const TimeDirectory& t) {
-        return caseDir / "postProcessing" / "profileBins" / t.name / (setup.profile + ".dat");
-    };
-    const TimesWithInput selected = selectTimesWithInput(
-        o.caseDir, o.time, o.latestTime, [&](const TimeDirectory& t) { return fs::exists(tableOf(t)); },
-        [&](const TimeDirectory& t) {
-            throw InputError(dict.fileName(), dict.lineOf("profile"), "profile",
-                             "no profile table " + tableOf(t).string() + " (run profileBins first)");
-        },
-        [&](const std::vector<std::string>&) {
-            throw InputError(dict.fileName(), dict.lineOf("profile"), "profile",
-                             "no time of case '" + o.caseDir + "' has the profile table postProcessing/profileBins/<time>/" +
-                                 setup.profile + ".dat (run profileBins first)");
-        });
+    const TimesWithInput selected = selectProfileTimes(o, dict, setup.profile);
+    const auto tableOf = [&](const TimeDirectory& t) { return profileTablePath(o.caseDir, t.name, setup.profile); };
     std::vector<FitSlipLengthResult> results;
     for (const TimeDirectory& t : selected.times) {
-        const ProfileTableData table = readProfileTable(tableOf(t).string());
+        const ProfileTableData table = readProfileTable(tableOf(t));
         const fs::path sampling = caseDir / t.name / "sampling" / (setup.profile + ".h5");
         results.push_back(fitSlipLength(setup, table, t.name, readTableBlocks(sampling.string(), table, setup.component)));
         results.back().profileFile = (fs::path("postProcessing") / "profileBins" / t.name / (setup.profile + ".dat")).string();

@@ -53,6 +53,7 @@
 #include "analysis/PoiseuilleFit.hpp"
 #include "analysis/TunableSlipPrediction.hpp"
 #include "io/Dictionary.hpp"
+#include "io/TimeDirectories.hpp"
 #include "case/DpdProperties.hpp"
 #include "sampling/ProfileTable.hpp"
 
@@ -79,6 +80,7 @@ struct FitSlipLengthSetup {
     double slipPredictionNu = 0.0;    // > 0: slipPredictionNu given
     bool hasWallPositions = false;    // wallPositions given: walls of a geometry, at rest
     double wallLow = 0.0, wallHigh = 0.0;
+    bool predictTunableSlip = true;   // false: no predicted slip length (a striped wall's is not the formula's)
 };
 
 // Checks keywords (unknown ones, mode, component, exclude) and resolves the component and the body
@@ -138,6 +140,11 @@ struct FitSlipLengthOptions {
     std::string time;
     bool latestTime = false;
 };
+
+// Where profileBins wrote a case's table, and the times that hold it as the options select them
+// (InputError naming the dictionary's `profile` when a named time lacks it or no time has it).
+std::string profileTablePath(const std::string& caseDir, const std::string& time, const std::string& profile);
+TimesWithInput selectProfileTimes(const FitSlipLengthOptions& options, const Dictionary& dict, const std::string& profile);
 
 // The whole tool: reads the dictionary and constant/dpdProperties, fits every selected time, then
 // writes <case>/postProcessing/fitSlipLength/<time>/fit.dat and prints each result. In the default

@@ -133,18 +133,12 @@ def main():
     ax = ax.ravel()
     ax[0].errorbar(g2, b2, yerr=e2, fmt="o-", label="2-D (published)")
     ax[0].errorbar(g3, b3, yerr=e3, fmt="s--", label="3-D")
-    table = published["tables"]["Table 1"]
-    ax[0].plot(table["gamma_fw"], table["slipLength"], "rD", label="published (2-D, Table 1)")
-    ax[0].set_xscale("log"); ax[0].set_xlabel("gamma_fw"); ax[0].set_ylabel("slip length (mean of the walls)")
-    ax[0].set_title("slip length against gamma_fw")
+    draw_published_slip(ax[0], published)
     ax[1].errorbar(g2, s2["nu"], yerr=s2["nuError"], fmt="o-", label="2-D")
     ax[1].errorbar(g3, s3["nu"], yerr=s3["nuError"], fmt="s--", label="3-D")
     ax[1].set_xscale("log"); ax[1].set_xlabel("gamma_fw"); ax[1].set_ylabel("nu (parabola fit)")
     ax[1].set_title("fitted viscosity")
-    colours = plt.cm.viridis(np.linspace(0, 0.9, len(g2)))
-    for k, c in enumerate(s2["case"]):
-        p = profile("sweep2D", c)
-        ax[2].errorbar(p["z"], p["ux"], yerr=p["uxErr"], fmt="o", ms=2, color=colours[k], label=f"gamma_fw {g2[k]:g}")
+    draw_profiles(ax[2], "sweep2D", s2["case"], g2)
     ax[2].set_xlabel("z"); ax[2].set_ylabel("u_x"); ax[2].set_title("2-D velocity profiles")
     p = profile("sweep2D", s2["case"][k45])
     ax[3].plot(p["z"], p["density"], "k-", label="standard wall (a_wf = a)")
@@ -162,6 +156,20 @@ def main():
     fig.savefig("slipGammaFw.png", dpi=100)
     print("Written slipGammaFw.png and results.dat")
     return 0 if all(ok for _, ok, _ in checks) else 1
+
+
+def draw_published_slip(ax, published):
+    table = published["tables"]["Table 1"]
+    ax.plot(table["gamma_fw"], table["slipLength"], "rD", label="published (2-D, Table 1)")
+    ax.set_xscale("log"); ax.set_xlabel("gamma_fw"); ax.set_ylabel("slip length (mean of the walls)")
+    ax.set_title("slip length against gamma_fw")
+
+
+def draw_profiles(ax, sweep_dir, cases, gammas):
+    colours = plt.cm.viridis(np.linspace(0, 0.9, len(gammas)))
+    for k, c in enumerate(cases):
+        p = profile(sweep_dir, c)
+        ax.errorbar(p["z"], p["ux"], yerr=p["uxErr"], fmt="o", ms=2, color=colours[k], label=f"gamma_fw {gammas[k]:g}")
 
 
 def published_comparison(published, gammas, b, err):
@@ -208,14 +216,8 @@ def main_plane_near_row():
         s2 = read_sweep("sweep2D/sweep.dat")
         b2, e2 = slip_mean(s2)
         ax[0].errorbar(s2["pairCoeffs/fluid-wall/gamma"], b2, yerr=e2, fmt="s--", label="rows 0.289 / 0.866 (published wall)")
-    table = published["tables"]["Table 1"]
-    ax[0].plot(table["gamma_fw"], table["slipLength"], "rD", label="published (2-D, Table 1)")
-    ax[0].set_xscale("log"); ax[0].set_xlabel("gamma_fw"); ax[0].set_ylabel("slip length (mean of the walls)")
-    ax[0].set_title("slip length against gamma_fw")
-    colours = plt.cm.viridis(np.linspace(0, 0.9, len(gv)))
-    for k, c in enumerate(sv["case"]):
-        p = profile("sweepPlaneNearRow", c)
-        ax[1].errorbar(p["z"], p["ux"], yerr=p["uxErr"], fmt="o", ms=2, color=colours[k], label=f"gamma_fw {gv[k]:g}")
+    draw_published_slip(ax[0], published)
+    draw_profiles(ax[1], "sweepPlaneNearRow", sv["case"], gv)
     for w in (z_low, z_high):
         ax[1].axvline(w, color="gray", ls=":")
     ax[1].set_xlabel("z"); ax[1].set_ylabel("u_x"); ax[1].set_title("velocity profiles (variant)")

@@ -1,0 +1,316 @@
+#!/usr/bin/env python3
+"""Striped-wall tutorial: the measured slip tensor against the project's continuum reference.
+
+Reads the calibration (calibration/gammaL.dat: where the wall acts, each sector's gamma_L and the slip
+it gives), the sweeps (slipTensor's results per run: sweepAngle/, and at full size sweepGasFraction/,
+sweepLocalSlip/, sweepHeight/, sweepForce/) and the fluid at rest over the stripes (rest/); computes
+the reference with stripedSlip at the calibrated slips in the channel between the hydrodynamic walls;
+writes results.dat and stripedWall.png and exits non-zero when a check fails:
+  - b_par and b_perp (mean of the walls, from the hydrodynamic wall) within max(3 standard errors, 5 %)
+    of the reference: in the angle sweep the weighted mean of the runs that drive each, elsewhere per
+    run (gas fraction, local slip, height); and b_par - b_perp of the angle sweep, which does not
+    depend on where the wall acts;
+  - the transverse flux ratio within max(3 standard errors, 5 %) of the reference at every angle
+    between 0 and 90 and every channel height, and zero within 3 standard errors at theta 0 and 90;
+  - the flux linear in the force: at twice the force, the flux per unit force along and across the
+    stripes within 3 standard errors of the flux at the standard force;
+  - at rest, the layer next to the walls (within zc) holds the same density and kT over the gas and
+    the no-slip sectors, within 3 standard errors of their difference.
+The standard error of a comparison holds the run's, the wall position's (slip lengths) and the
+calibration's (the reference recomputed at each sector's slip +- its error).
+"""
+import math
+import os
+import re
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
+from dpdResults import latest, read_dict, read_sweep, read_table  # noqa: E402
+
+RELATIVE = 0.05
+TEST_MODE = "-test" in sys.argv[1:]
+TEST_CHECKS = ("b_par (angle sweep", "at rest, density")
+ZC = 1.0
+
+
+def run_striped_slip(gas_fraction, slip, height, period, angles):
+    text = subprocess.run(["stripedSlip", "-period", f"{period:g}", "-gasFraction", f"{gas_fraction:g}",
+                           "-slip", f"{slip:.8g}", "-height", f"{height:.8g}", "-walls", "2",
+                           "-angles", ",".join(f"{a:g}" for a in angles)],
+                          check=True, capture_output=True, text=True).stdout
+    d = {k: float(v) for k, v in re.findall(r"^(slipParallel|slipPerpendicular)\s+(\S+);", text, re.M)}
+    d["ratio"] = {float(a): float(r) for a, r in re.findall(r"angle(\S+) \{ slip \S+; transverseFluxRatio (\S+); \}", text)}
+    return d
+
+
+class Reference:
+    """The continuum reference for one wall (gas fraction, gas sectors' slip b with its calibration
+    error) in a channel of height H, with the no-slip sectors' residual slip b0 +- e0: to first order in
+    b0 / L such a wall is a no-slip / (b - b0) wall b0 behind it, so the channel is 2 b0 higher and
+    b_eff b0 larger. `error(get)` is the calibration's share: half the spread of the reference at each
+    sector's slip +- its error, the two in quadrature."""
+
+    def __init__(self, cal, gas_fraction, slip, slip_error, height, angles=(45.0,)):
+        b0, e0 = cal["gammaNoSlipSlip"], cal["gammaNoSlipSlipError"]
+        self.angles = list(angles)
+
+        def solve(b, residual):
+            d = run_striped_slip(gas_fraction, b - residual, height + 2 * residual, cal["period"], self.angles)
+            d["slipParallel"] += residual
+            d["slipPerpendicular"] += residual
+            return d
+
+        self.value = solve(slip, b0)
+        self.shifted = [solve(slip + slip_error, b0), solve(max(slip - slip_error, 1e-9), b0),
+                        solve(slip, b0 + e0), solve(slip, b0 - e0)]
+
+    def __getitem__(self, key):
+        return self.value[key]
+
+    def error(self, get):
+        s = [get(r) for r in self.shifted]
+        return math.hypot(0.5 * (s[0] - s[1]), 0.5 * (s[2] - s[3]))
+
+
+def numbers(column):
+    """A sweep column as numbers, "none" (a component without force) as NaN; other words as they are."""
+    if isinstance(column, np.ndarray):
+        return column
+    try:
+        return np.array([math.nan if w == "none" else float(w) for w in column])
+    except ValueError:
+        return column
+
+
+def read_runs(path, offset):
+    """slipTensor's table, with b_par and b_perp moved to the hydrodynamic wall (b = apparent + offset)."""
+    s = {k: numbers(v) for k, v in read_sweep(path).items()}
+    for name in ("Parallel", "Perpendicular"):
+        s["b" + name] = 0.5 * (s[f"slip{name}_0"] + s[f"slip{name}_1"]) + offset
+        s["e" + name] = 0.5 * np.hypot(s[f"slip{name}Error_0"], s[f"slip{name}Error_1"])
+    return s
+
+
+def weighted_mean(values, errors):
+    w = 1.0 / np.asarray(errors) ** 2
+    return float(np.sum(w * values) / np.sum(w)), float(1.0 / math.sqrt(np.sum(w)))
+
+
+def compare(label, measured, run_error, expected, calibration_error, wall_error=0.0):
+    """A check: measured within max(3 standard errors, 5 %) of expected, the errors combined."""
+    total = math.sqrt(run_error ** 2 + wall_error ** 2 + calibration_error ** 2)
+    bound = max(3.0 * total, RELATIVE * abs(expected))
+    return (f"{label} within max(3 standard errors, 5 %) = {bound:.4f} of the reference {expected:.4f}",
+            abs(measured - expected) <= bound,
+            f"{measured:+.4f} +- {total:.4f} (run {run_error:.4f}, wall {wall_error:.4f}, calibration "
+            f"{calibration_error:.4f}), difference {measured - expected:+.4f}")
+
+
+def channel_planes(path):
+    with open(path) as f:
+        zs = sorted(float(p) for p in re.findall(r"point\s*\(\s*\S+\s+\S+\s+(\S+)\s*\)", f.read()))
+    return zs[0], zs[-1]
+
+
+def rest_layer(path, wall_low, wall_high, period, gas_fraction):
+    """Count-weighted density and kT, with errors, of the bins within zc of a wall, over the gas sectors
+    (the first phi2 L of each period from x = 0, the stripes' offset) and the no-slip ones."""
+    t = read_table(path)
+    near = np.minimum(t["z"] - wall_low, wall_high - t["z"]) < ZC
+    gas = np.mod(t["x"], period) < gas_fraction * period
+    out = {}
+    for name, sel in (("gas", near & gas), ("noSlip", near & ~gas)):
+        w = t["count"][sel]
+        out[name] = {q: (float(np.sum(w * t[q][sel]) / np.sum(w)),
+                         float(np.sqrt(np.sum((w * t[q + "Err"][sel]) ** 2)) / np.sum(w))) for q in ("density", "kT")}
+    return out, t, near
+
+
+def angle_study(cal, s, height, gas_fraction, checks, out):
+    offset_err = cal["halfWidthError"]
+    angles = [round(float(a), 2) for a in s["theta"]]  # the force's components were rounded to 8 digits
+    ref = Reference(cal, gas_fraction, cal["gammaGasSlip"], cal["gammaGasSlipError"], height, angles)
+    out.write("# theta  b_par +- err   b_perp +- err   b_eff(theta) +- err   nu_par nu_perp   flux along, across the "
+              "stripes   transverse flux ratio +- err   reference b_eff, ratio\n")
+    for k, a in enumerate(angles):
+        c2, s2 = math.cos(math.radians(a)) ** 2, math.sin(math.radians(a)) ** 2
+        out.write(f"{a:6g}  {s['bParallel'][k]:+.4f} +- {s['eParallel'][k]:.4f}  {s['bPerpendicular'][k]:+.4f} +- "
+                  f"{s['ePerpendicular'][k]:.4f}  {s['slipEffective'][k] + cal['offset']:+.4f} +- "
+                  f"{s['slipEffectiveError'][k]:.4f}  {s['nuParallel'][k]:.4f} {s['nuPerpendicular'][k]:.4f}  "
+                  f"{s['fluxParallel'][k]:.4f} +- {s['fluxParallelError'][k]:.4f}  {s['fluxPerpendicular'][k]:.4f} +- "
+                  f"{s['fluxPerpendicularError'][k]:.4f}  {s['transverseFluxRatio'][k]:+.5f} +- "
+                  f"{s['transverseFluxRatioError'][k]:.5f}   "
+                  f"{ref['slipParallel'] * c2 + ref['slipPerpendicular'] * s2:.4f} {ref['ratio'][a]:.5f}\n")
+    means = {}
+    for key, label in (("Parallel", "b_par"), ("Perpendicular", "b_perp")):
+        runs = np.isfinite(s["b" + key])
+        mean, err = means[key] = weighted_mean(s["b" + key][runs], s["e" + key][runs])
+        checks.append(compare(f"{label} (angle sweep, weighted over {int(runs.sum())} runs)", mean, err,
+                              ref["slip" + key], ref.error(lambda r: r["slip" + key]), offset_err))
+        out.write(f"# {label}: {mean:.4f} +- {err:.4f} (runs; wall +- {offset_err:.4f}), reference {ref['slip' + key]:.4f}\n")
+    # The anisotropy b_par - b_perp does not depend on where the wall acts: a sharper test.
+    difference = means["Parallel"][0] - means["Perpendicular"][0]
+    checks.append(compare("b_par - b_perp (angle sweep; the wall's position cancels)", difference,
+                          math.hypot(means["Parallel"][1], means["Perpendicular"][1]),
+                          ref["slipParallel"] - ref["slipPerpendicular"],
+                          ref.error(lambda r: r["slipParallel"] - r["slipPerpendicular"])))
+    for k, a in enumerate(angles):
+        ratio, err = s["transverseFluxRatio"][k], s["transverseFluxRatioError"][k]
+        if a == 45.0:
+            checks.append(("the flow turns towards the stripes at theta 45 (ratio above 3 standard errors)",
+                           ratio > 3 * err, f"{ratio:+.5f} +- {err:.5f}"))
+        if a % 90 == 0:
+            checks.append((f"no transverse flux at theta {a:g} (within 3 standard errors)", abs(ratio) <= 3 * err,
+                           f"{ratio:+.5f} +- {err:.5f}"))
+        else:
+            checks.append(compare(f"transverse flux ratio at theta {a:g}", ratio, err, ref["ratio"][a],
+                                  ref.error(lambda r, a=a: r["ratio"][a])))
+    return ref
+
+
+def tensor_rows(cal, s, checks, out, title, parameter, references):
+    """Per run at 45 degrees: b_par, b_perp and the flux ratio against their references."""
+    out.write(f"# {title}: {parameter}  b_par +- err (reference)  b_perp +- err (reference)  flux ratio +- err (reference)\n")
+    for k, ref in enumerate(references):
+        label = f"{parameter} {ref.label:g}"
+        for key, name in (("Parallel", "b_par"), ("Perpendicular", "b_perp")):
+            checks.append(compare(f"{name} at {label}", s["b" + key][k], s["e" + key][k], ref["slip" + key],
+                                  ref.error(lambda r, key=key: r["slip" + key]), cal["halfWidthError"]))
+        checks.append(compare(f"transverse flux ratio at {label}", s["transverseFluxRatio"][k],
+                              s["transverseFluxRatioError"][k], ref["ratio"][45.0], ref.error(lambda r: r["ratio"][45.0])))
+        out.write(f"{ref.label:8g}  {s['bParallel'][k]:.4f} +- {s['eParallel'][k]:.4f} ({ref['slipParallel']:.4f})  "
+                  f"{s['bPerpendicular'][k]:.4f} +- {s['ePerpendicular'][k]:.4f} ({ref['slipPerpendicular']:.4f})  "
+                  f"{s['transverseFluxRatio'][k]:+.5f} +- {s['transverseFluxRatioError'][k]:.5f} ({ref['ratio'][45.0]:.5f})\n")
+
+
+def labelled(ref, label):
+    ref.label = label
+    return ref
+
+
+def main():
+    cal = read_dict("calibration/gammaL.dat")
+    period, offset = cal["period"], cal["offset"]
+    plane_low, plane_high = channel_planes("constant/dpdProperties")
+    height = plane_high - plane_low - 2.0 * offset  # between the hydrodynamic walls
+    gas_fraction = float(re.search(r"gasFraction\s+(\S+);", open("constant/dpdProperties").read()).group(1))
+    checks = []
+    out = open("results.dat", "w")
+    out.write(f"# Striped walls, period L = {period:g}, phi2 {gas_fraction:g}, local slip b = {cal['gammaGasSlip']:g} "
+              f"(b/L {cal['gammaGasSlip'] / period:g}), two walls in phase, H = {height:.3f} between the hydrodynamic walls\n"
+              f"# calibration: gamma_L no slip {cal['gammaNoSlip']:.4f} (b0 {cal['gammaNoSlipSlip']:.4f} +- "
+              f"{cal['gammaNoSlipSlipError']:.4f}), gas {cal['gammaGas']:.4f} (b {cal['gammaGasSlip']:.4f} +- "
+              f"{cal['gammaGasSlipError']:.4f}); the wall acts {offset:.4f} +- {cal['halfWidthError']:.4f} in front of "
+              "each plane\n")
+    s = read_runs("sweepAngle/sweep.dat", offset)
+    ref = angle_study(cal, s, height, gas_fraction, checks, out)
+    k45 = int(np.argmin(np.abs(s["theta"] - 45.0)))
+
+    studies = {}
+    if os.path.exists("sweepGasFraction/sweep.dat"):
+        sg = read_runs("sweepGasFraction/sweep.dat", offset)
+        fractions = sg["walls/lower/tunableSlip/stripes/gasFraction"]
+        refs = [labelled(Reference(cal, f, cal["gammaGasSlip"], cal["gammaGasSlipError"], height), f) for f in fractions]
+        tensor_rows(cal, sg, checks, out, "against the gas fraction (theta 45)", "phi2", refs)
+        studies["phi2"] = (sg, refs)
+    if os.path.exists("sweepLocalSlip/sweep.dat"):
+        sl = read_runs("sweepLocalSlip/sweep.dat", offset)
+        slips, errors = cal["slipTargets"], cal["gammaGasSlipErrorOf"]
+        refs = [labelled(Reference(cal, gas_fraction, b, e, height), b) for b, e in zip(slips, errors)]
+        tensor_rows(cal, sl, checks, out, "against the local slip (theta 45)", "b", refs)
+        studies["b"] = (sl, refs)
+    if os.path.exists("sweepHeight/sweep.dat"):
+        sh = read_runs("sweepHeight/sweep.dat", offset)
+        planes = 2.0 * np.abs(np.array([float(p.strip("()").split(",")[2]) for p in sh["walls/lower/point"]]))
+        refs = [labelled(Reference(cal, gas_fraction, cal["gammaGasSlip"], cal["gammaGasSlipError"], p - 2 * offset),
+                         p - 2 * offset) for p in planes]
+        tensor_rows(cal, sh, checks, out, "against the channel's height (theta 45)", "H", refs)
+        studies["H"] = (sh, refs)
+    if os.path.exists("sweepForce/sweep.dat"):
+        sf = read_runs("sweepForce/sweep.dat", offset)
+        out.write("# flux per unit force at theta 45: standard force, twice the force\n")
+        for key, name in (("fluxParallel", "along the stripes"), ("fluxPerpendicular", "across them")):
+            q1, e1 = s[key][k45], s[key + "Error"][k45]
+            q2, e2 = sf[key][0] / 2.0, sf[key + "Error"][0] / 2.0
+            se = math.hypot(e1, e2)
+            checks.append((f"flux {name} linear in the force: per unit force at 2 g as at g (3 standard errors)",
+                           abs(q2 - q1) <= 3 * se, f"{q2:.4f} against {q1:.4f}, difference {q2 - q1:+.4f} +- {se:.4f}"))
+            out.write(f"{name}: {q1:.4f} +- {e1:.4f}, {q2:.4f} +- {e2:.4f}\n")
+
+    layer, grid, near = rest_layer(latest("rest/postProcessing/profileBins/*/stripeGrid.dat"), plane_low, plane_high,
+                                   period, gas_fraction)
+    for where in ("gas", "noSlip"):
+        out.write(f"# at rest, within zc of the walls over the {where} sectors: density {layer[where]['density'][0]:.4f} +- "
+                  f"{layer[where]['density'][1]:.4f}, kT {layer[where]['kT'][0]:.4f} +- {layer[where]['kT'][1]:.4f}\n")
+    for q in ("density", "kT"):
+        (g, ge), (n, ne) = layer["gas"][q], layer["noSlip"][q]
+        se = math.hypot(ge, ne)
+        checks.append((f"at rest, {q} within zc of the walls the same over gas and no-slip sectors (3 standard errors)",
+                       abs(g - n) <= 3 * se, f"{g:.4f} against {n:.4f}, difference {g - n:+.4f} +- {se:.4f}"))
+    # The test's short runs (800 time units, a few of the parallel plug mode's decay times) check the
+    # machinery, b_par and the density at rest; the rest is information there (README: the transverse
+    # fluxes' errors are not yet decisive, and b_perp and kT over the no-slip sectors fail at full size).
+    for name, ok, value in checks:
+        kind = ("PASS" if ok else "FAIL") if not TEST_MODE or name.startswith(TEST_CHECKS) else "info"
+        out.write(f"check  {kind}  {name}: {value}\n")
+    out.close()
+    print(open("results.dat").read(), end="")
+    draw(cal, s, ref, studies, grid, near, height, gas_fraction)
+    print("Written stripedWall.png and results.dat")
+    return 0 if all(ok for name, ok, _ in checks if not TEST_MODE or name.startswith(TEST_CHECKS)) else 1
+
+
+def draw(cal, s, ref, studies, grid, near, height, gas_fraction):
+    period, offset = cal["period"], cal["offset"]
+    fig, ax = plt.subplots(2, 3, figsize=(16, 9))
+    ax = ax.ravel()
+    fine = np.linspace(0, 90, 91)
+    c2, s2 = np.cos(np.radians(fine)) ** 2, np.sin(np.radians(fine)) ** 2
+    ax[0].plot(fine, ref["slipParallel"] * c2 + ref["slipPerpendicular"] * s2, "k-", label="continuum reference")
+    ax[0].errorbar(s["theta"], s["slipEffective"] + offset, yerr=s["slipEffectiveError"], fmt="o", label="DPD (slipTensor)")
+    ax[0].set_xlabel("theta (degrees from the stripes)"); ax[0].set_ylabel("b_eff(theta)")
+    ax[0].set_title(f"effective slip: phi2 {gas_fraction:g}, b/L {cal['gammaGasSlip'] / period:g}, H/L {height / period:.2f}")
+    curve = Reference(cal, gas_fraction, cal["gammaGasSlip"], 0.0, height, range(0, 91, 5))["ratio"]
+    ax[1].plot(list(curve), list(curve.values()), "k-", label="continuum reference")
+    ax[1].errorbar(s["theta"], s["transverseFluxRatio"], yerr=s["transverseFluxRatioError"], fmt="o", label="DPD")
+    ax[1].axhline(0, color="gray", ls=":")
+    ax[1].set_xlabel("theta (degrees)"); ax[1].set_ylabel("flux across the force / along it")
+    ax[1].set_title("transverse flux, H = %.2f" % height)
+    for panel, key, xlabel in ((2, "phi2", "gas fraction phi2"), (3, "b", "local slip b of the gas sectors")):
+        if key not in studies:
+            continue
+        runs, refs = studies[key]
+        x = [r.label for r in refs]
+        for name, style, colour in (("Parallel", "o", "C0"), ("Perpendicular", "s", "C1")):
+            ax[panel].errorbar(x, runs["b" + name], yerr=runs["e" + name], fmt=style, color=colour, label=f"b_{name[:4].lower()} DPD")
+            ax[panel].plot(x, [r["slip" + name] for r in refs], "-", color=colour, label=f"b_{name[:4].lower()} reference")
+        ax[panel].set_xlabel(xlabel); ax[panel].set_ylabel("slip length"); ax[panel].set_title(f"theta 45: against {key}")
+    if "H" in studies:
+        runs, refs = studies["H"]
+        ax[4].errorbar([r.label for r in refs], runs["transverseFluxRatio"], yerr=runs["transverseFluxRatioError"],
+                       fmt="o", label="DPD")
+        ax[4].plot([r.label for r in refs], [r["ratio"][45.0] for r in refs], "k-", label="continuum reference")
+        ax[4].set_xlabel("H (between the hydrodynamic walls)"); ax[4].set_ylabel("transverse flux ratio")
+        ax[4].set_title("theta 45, L = b: the flux ratio against H")
+    xs = np.unique(grid["x"])
+    for q, style in (("density", "o-"), ("kT", "s-")):
+        col = [np.average(grid[q][near & (grid["x"] == x)], weights=grid["count"][near & (grid["x"] == x)]) for x in xs]
+        ax[5].plot(xs, np.asarray(col) / np.mean(col), style, label=f"{q} / its mean")
+    ax[5].axvspan(0, gas_fraction * period, color="lightblue", alpha=0.4, label="gas sector")
+    ax[5].set_xlabel("x (across the stripes)"); ax[5].set_title("at rest, within zc of the walls")
+    for a in ax:
+        if a.has_data():
+            a.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig("stripedWall.png", dpi=100)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
