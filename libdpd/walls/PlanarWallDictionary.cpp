@@ -28,14 +28,19 @@ TunableSlipStripes readStripes(const Dictionary& sd, const PlanarWallSettings& w
     return s;
 }
 
-// tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed.
+// tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed;
+// friction all (default) | tangential.
 TunableSlipParameters readTunableSlip(const Dictionary& td) {
-    td.checkKeys({"gammaL", "zc", "epsilon", "sigma", "stripes"});
+    td.checkKeys({"gammaL", "zc", "epsilon", "sigma", "stripes", "friction"});
     TunableSlipParameters t;
     t.gammaL = td.getNonNegative<double>("gammaL");
     t.zc = td.getPositive<double>("zc");
     t.epsilon = td.getPositive<double>("epsilon");
     t.sigma = td.getPositive<double>("sigma");
+    const std::string friction = td.getOrDefault<std::string>("friction", "all");
+    if (friction != "all" && friction != "tangential")
+        td.fail("friction", "expected all (every velocity component) or tangential (along the plane), got '" + friction + "'");
+    t.tangentialOnly = friction == "tangential";
     return t;
 }
 

@@ -22,8 +22,10 @@ Eigen::Vector3d TunableSlipParameters::force(double z, const Eigen::Vector3d& n,
                                              const Eigen::Vector3d& xi, double kT, double dt) const {
     Eigen::Vector3d f = wcaForce(z) * n;
     const double w = frictionWeight(z);
-    if (w > 0.0) f += -gammaL * w * vRelative + std::sqrt(2.0 * kT * gammaL * w / dt) * xi;
-    return f;
+    if (w <= 0.0) return f;
+    const Eigen::Vector3d bath = -gammaL * w * vRelative + std::sqrt(2.0 * kT * gammaL * w / dt) * xi;
+    // Fluctuation-dissipation holds component by component, so projecting both keeps the bath at kT.
+    return f + (tangentialOnly ? Eigen::Vector3d(bath - bath.dot(n) * n) : bath);
 }
 
 std::uint32_t tunableSlipStream(std::size_t wallIndex) {

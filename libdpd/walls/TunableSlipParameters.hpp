@@ -21,6 +21,9 @@ struct TunableSlipParameters {
     double zc = 1.0;       // range of the friction layer in front of the plane
     double epsilon = 1.0;  // WCA energy
     double sigma = 0.5;    // WCA length: the repulsion acts for z < 2^(1/6) sigma
+    // Friction and random force on the velocity along the plane only (friction tangential): the
+    // published wall acts on every component, which also damps flow towards and away from the plane.
+    bool tangentialOnly = false;
 
     double wcaRange() const;
     // w_L(z) = 1 - z/z_c for 0 <= z < z_c, else 0.

@@ -118,6 +118,13 @@ TEST(TunableSlipWall, ForceMatchesHandValues) {
     EXPECT_NEAR(f.x(), -1.5 + 0.5 * r, 1e-9);
     EXPECT_NEAR(f.y(), -r, 1e-9);
     EXPECT_NEAR(f.z(), 780288.0 + 2.0 * r, 1e-6);
+    // friction tangential: the same along the plane, the WCA force alone along the normal.
+    TunableSlipParameters tangential = t;
+    tangential.tangentialOnly = true;
+    const Eigen::Vector3d g = tangential.force(0.25, {0, 0, 1}, {1, 0, 0.3}, {0.5, -1, 2}, 1.0, 0.01);
+    EXPECT_NEAR(g.x(), -1.5 + 0.5 * r, 1e-9);
+    EXPECT_NEAR(g.y(), -r, 1e-9);
+    EXPECT_NEAR(g.z(), 780288.0, 1e-6);
 }
 
 // Through System::computeForces: one particle 0.75 in front of an upper wall (normal -z) sliding at
@@ -311,6 +318,7 @@ TEST(TunableSlipWall, DictionaryEntriesAreRead) {
     EXPECT_EQ(w.tunableSlip.zc, 1.5);
     EXPECT_EQ(w.tunableSlip.epsilon, 0.8);
     EXPECT_EQ(w.tunableSlip.sigma, 0.4);
+    EXPECT_FALSE(w.tunableSlip.tangentialOnly) << "the published wall's friction acts on every component";
     EXPECT_EQ(w.rule, ReflectionRule::specular);  // the safety net's default behind a tunable-slip wall
     EXPECT_FALSE(m.walls.planes()[1]->hasTunableSlip);
     EXPECT_FALSE(m.walls[1].actsWithForces());
@@ -336,6 +344,8 @@ TEST(TunableSlipWall, BadEntriesNameFileLineAndKeyword) {
     expectError("        tunableSlip { gammaL 2; zc 1; epsilon 1; sigma -0.5; }", "sigma");
     expectError("        tunableSlip { gammaL 2; zc 1; epsilon 1; }", "sigma");
     expectError("        tunableSlip { gamaL 2; zc 1; epsilon 1; sigma 0.5; }", "gamaL");
+    expectError("        tunableSlip { " + ok + " friction normal; }", "friction");
+    EXPECT_EQ(inputError("        tunableSlip { " + ok + " friction tangential; }"), "");
     expectError("        tunableSlip 2;", "tunableSlip");
     expectError("        tunableSlip { " + ok + " }", "Shardlow", "integrator { type Shardlow; }\n");
 }
