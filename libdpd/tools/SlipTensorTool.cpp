@@ -8,10 +8,12 @@
 #include "tools/FitMode.hpp"
 #include "tools/FitModeParts.hpp"
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -168,7 +170,11 @@ SlipTensorResult slipTensor(const Dictionary& fitDict, const Dictionary& dpdProp
     const int a1 = (r.axis + 1) % 3, a2 = (r.axis + 2) % 3;
     if (g[a1] == 0.0 && g[a2] == 0.0)
         dpdProperties.fail("bodyForce", "no force in the walls' plane drives the channel");
-    const FitSlipLengthSetup first = componentSetup(fitDict, dpdProperties, g[a1] != 0.0 ? a1 : a2);
+    // One fit setup per driven in-plane axis, read once.
+    std::array<std::optional<FitSlipLengthSetup>, 3> setups;
+    for (int a : {a1, a2})
+        if (g[a] != 0.0) setups[a] = componentSetup(fitDict, dpdProperties, a);
+    const FitSlipLengthSetup& first = setups[a1] ? *setups[a1] : *setups[a2];
     r.perpendicularAxis = stripesAxis(first, t, r.axis);
     if (r.perpendicularAxis == r.axis)
         dpdProperties.fail("walls", "the stripes run across the walls' normal " + t.axisName() + ": give an axis in the walls' plane");
@@ -180,11 +186,10 @@ SlipTensorResult slipTensor(const Dictionary& fitDict, const Dictionary& dpdProp
     const bool sampled = fs::exists(samplingFile);
     const auto blocksOf = [&](int component) { return sampled ? readTableBlocks(samplingFile, t, component) : TableBlocks{}; };
     const TableBlocks parallelBlocks = blocksOf(r.parallelAxis), perpendicularBlocks = blocksOf(r.perpendicularAxis);
-    if ((r.parallelFitted = r.gParallel != 0.0))
-        r.parallel = fitSlipLength(componentSetup(fitDict, dpdProperties, r.parallelAxis), t, time, parallelBlocks);
-    if ((r.perpendicularFitted = r.gPerpendicular != 0.0))
-        r.perpendicular =
-            fitSlipLength(componentSetup(fitDict, dpdProperties, r.perpendicularAxis), t, time, perpendicularBlocks);
+    if ((r.parallelFitted = setups[r.parallelAxis].has_value()))
+        r.parallel = fitSlipLength(*setups[r.parallelAxis], t, time, parallelBlocks);
+    if ((r.perpendicularFitted = setups[r.perpendicularAxis].has_value()))
+        r.perpendicular = fitSlipLength(*setups[r.perpendicularAxis], t, time, perpendicularBlocks);
 
     // Fluxes per unit width: the bins' volume flux weighted by their density over the centre's.
     const ChannelBounds bounds = channelBounds(first, t, r.axis);
