@@ -1,6 +1,7 @@
 #include "app/ToolCommandLine.hpp"
 
 #include "core/Error.hpp"
+#include "parallel/Communicator.hpp"
 
 #include <iostream>
 #include <stdexcept>
@@ -34,7 +35,10 @@ bool ToolCommandLine::parse(int argc, char** argv) {
     return true;
 }
 
-int runTool(const std::string& toolName, const std::function<void()>& body) {
+int runTool(const std::string& tool, const std::function<void()>& body) {
+    // Under mpirun every rank may meet the error; which one said it is part of the message.
+    const Communicator& world = Communicator::world();
+    const std::string toolName = world.rank() > 0 ? tool + " (rank " + std::to_string(world.rank()) + ")" : tool;
     try {
         body();
         return 0;

@@ -243,7 +243,8 @@ DpdModel readDpdProperties(const std::string& caseDir) {
     return m;
 }
 
-System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile) {
+System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile,
+                   const Communicator* ranks, const std::vector<int>& slabPlanes) {
     if (snapshot.box.dimension != model.dimension)
         throw IoError(snapshotFile + ": the snapshot is " + std::to_string(snapshot.box.dimension) +
                       "-D but constant/dpdProperties says dimension " + std::to_string(model.dimension));
@@ -287,6 +288,8 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
     }
     requireFewInsideWalls(sys, model, snapshotFile);
     addBonds(sys, model, std::move(snapshot.bonds), snapshotFile);
+    sys.ranks = ranks;
+    sys.slabPlanes = slabPlanes;
     sys.initialise();
     return sys;
 }

@@ -48,6 +48,7 @@
 namespace dpd {
 
 class Dictionary;
+class Communicator;
 class System;
 struct Snapshot;
 
@@ -90,6 +91,9 @@ DpdModel readDpdProperties(const std::string& caseDir);
 
 // A ready-to-run system: the model's physics, the snapshot's particles (species matched by name),
 // the time step dt. Throws InputError/IoError when the snapshot does not fit the model.
-System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile);
+// With `ranks` (several), the system is this rank's slab of the box (System::ranks), cut as
+// slabPlanes says (planes per rank; empty: balanced).
+System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile,
+                   const Communicator* ranks = nullptr, const std::vector<int>& slabPlanes = {});
 
 }  // namespace dpd

@@ -314,7 +314,7 @@ void forEachPairRowInColours(const Particles& p, const CellList& cells, const Pa
     fillPairInputs(p, cells, velocities, ids, in);
     const float cutoff2 = cutoff2Below(cutoff);
     forEachSlabInColours(cells.cellsPerAxis()[0], [&](int ix) {
-        forEachPairRow(p, in, cells, plan, columns, cutoff2, ix, rowDone);
+        if (cells.isHomePlane(ix)) forEachPairRow(p, in, cells, plan, columns, cutoff2, ix, rowDone);
     });
 }
 

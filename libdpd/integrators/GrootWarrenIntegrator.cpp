@@ -17,7 +17,6 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
     Particles& p = sys.particles;
     const double dt = sys.dt();
     const double halfDt = 0.5 * dt;
-    const long n = static_cast<long>(p.size());
     halfKickAndDrift(sys);
     // Where the pair loop makes the predicted velocities, it reads the old forces through the sort's
     // order, and nothing else reads them: the sort need not move them.
@@ -31,7 +30,9 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         sys.completeWalls();
         return walls;
     }
-    // Keep v + dt f / 2 aside and write v~ into v for every force that reads it.
+    // Keep v + dt f / 2 aside and write v~ into v for every force that reads it (the sort may have
+    // changed the count: a decomposed run's particles came and went, and ghosts joined).
+    const long n = static_cast<long>(p.size());
     hx_.resize(n); hy_.resize(n); hz_.resize(n);
     forEachParticle(sys, [&](long i, auto mobile) {
         hx_[i] = p.vx[i]; hy_[i] = p.vy[i]; hz_[i] = p.vz[i];

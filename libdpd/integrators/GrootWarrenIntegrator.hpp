@@ -24,6 +24,7 @@ public:
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "GrootWarren"; }
     double lambda() const { return lambda_; }
+    bool runsOnSeveralRanks() const override { return true; }
     WallCounters step(System& sys) override;
     // Bytes held by the integrator's own buffers.
     std::size_t memoryBytes() const { return sizeof(double) * (hx_.capacity() + hy_.capacity() + hz_.capacity()); }

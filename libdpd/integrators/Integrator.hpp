@@ -25,6 +25,10 @@ public:
     virtual WallCounters step(System& sys) = 0;
     // Why this scheme cannot run a scene with these walls; empty when it can.
     virtual std::string unsupported(const WallList&) const { return {}; }
+    // Whether the scheme can run decomposed over several ranks: only what every particle does alone
+    // between one pair loop and the next (a second pair loop in a step would need the ghosts' new
+    // velocities, a sequential sweep the neighbours' updates).
+    virtual bool runsOnSeveralRanks() const { return false; }
 };
 
 using IntegratorRegistry = Registry<Integrator, const Dictionary&>;

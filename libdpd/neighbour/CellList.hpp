@@ -62,6 +62,10 @@ public:
     }
     const Box& box() const { return box_; }
     const Eigen::Vector3d& cellSize() const { return size_; }
+    // The planes of cells (constant x index) whose cells a pair loop visits as home cells: all of them
+    // (the default), or, for one rank of a decomposed run, its own and the one before (parallel/SlabDomain).
+    void setHomePlanes(std::vector<std::uint8_t> home) { homePlanes_ = std::move(home); }
+    bool isHomePlane(int ix) const { return homePlanes_.empty() || homePlanes_[static_cast<std::size_t>(ix)] != 0; }
     // Bytes held (capacities of the cell starts, the sort keys and order, and the sort's scratch).
     std::size_t memoryBytes() const;
 
@@ -80,6 +84,7 @@ private:
     // start_[2c] is where cell c starts, start_[2c + 1] where its frozen part starts.
     std::vector<std::uint32_t> start_;
     std::vector<std::uint8_t> frozenOfSpecies_;
+    std::vector<std::uint8_t> homePlanes_;  // empty: every plane
     // Kept between sorts, so a step allocates nothing.
     ParticleArray<std::uint32_t> keyOf_, order_, fill_;
     std::array<ParticleArray<double>, 3> scratch_;

@@ -79,6 +79,29 @@ void BinAccumulator::addVirial(const std::vector<SymmetricTensor>& virial) {
         for (int c = 0; c < 6; ++c) block[b].s[BinSums::kVirial + c] += virial[b][c];
 }
 
+std::vector<double> BinAccumulator::sums() const {
+    std::vector<double> out;
+    for (const auto& block : blocks_)
+        for (const BinSums& b : block) out.insert(out.end(), b.s.begin(), b.s.end());
+    return out;
+}
+
+void BinAccumulator::setSums(const std::vector<double>& sums) {
+    std::size_t at = 0;
+    for (auto& block : blocks_)
+        for (BinSums& b : block) {
+            if (at + BinSums::kFields > sums.size()) throw std::invalid_argument("BinAccumulator::setSums: too few sums");
+            std::copy(sums.begin() + static_cast<long>(at), sums.begin() + static_cast<long>(at + BinSums::kFields), b.s.begin());
+            at += BinSums::kFields;
+        }
+    if (at != sums.size()) throw std::invalid_argument("BinAccumulator::setSums: too many sums");
+}
+
+void BinAccumulator::clearSums() {
+    for (auto& block : blocks_)
+        for (BinSums& b : block) b.s.fill(0.0);
+}
+
 BinAccumulator BinAccumulator::fromBlocks(const BinLayout& layout, std::vector<std::uint8_t> speciesMask,
                                           long blockSamples, std::vector<std::vector<BinSums>> blocks,
                                           std::vector<long> samplesPerBlock) {

@@ -95,6 +95,12 @@ public:
     const std::vector<std::vector<BinSums>>& blocks() const { return blocks_; }
     const std::vector<long>& samplesPerBlock() const { return samplesPerBlock_; }
     const std::vector<std::uint8_t>& speciesMask() const { return speciesMask_; }
+    // Every block's sums in one array (block by block, bin by bin, field by field), and back: a
+    // decomposed run adds its ranks' sums this way. setSums takes an array of the same length.
+    std::vector<double> sums() const;
+    void setSums(const std::vector<double>& sums);
+    // Zero sums, the blocks and their sample counts kept.
+    void clearSums();
     // Restores an accumulator from stored blocks (restart, post-processing).
     static BinAccumulator fromBlocks(const BinLayout& layout, std::vector<std::uint8_t> speciesMask, long blockSamples,
                                      std::vector<std::vector<BinSums>> blocks, std::vector<long> samplesPerBlock);

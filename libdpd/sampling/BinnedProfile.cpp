@@ -1,5 +1,7 @@
 #include "sampling/BinnedProfile.hpp"
 
+#include "parallel/Communicator.hpp"
+
 #include "io/Dictionary.hpp"
 #include "sampling/BinAccumulatorFile.hpp"
 #include "sampling/BinLayoutDictionary.hpp"
@@ -71,6 +73,16 @@ void BinnedProfile::write(const std::string& timeDir, const System& sys) const {
     if (accumulator_.samples() == 0) return;
     const std::string file = (std::filesystem::path(timeDir) / "sampling" / (name_ + ".h5")).string();
     writeBins(file, accumulator_, sys.box.dimension, crossSection_, sys.time, sections_);
+}
+
+void BinnedProfile::sumOverRanks(const Communicator& comm) {
+    std::vector<double> sums = accumulator_.sums();
+    comm.sum(sums.data(), sums.size());
+    accumulator_.setSums(sums);
+}
+
+void BinnedProfile::keepRestoredSums(bool keep) {
+    if (!keep) accumulator_.clearSums();
 }
 
 void BinnedProfile::restore(const std::string& timeDir) {

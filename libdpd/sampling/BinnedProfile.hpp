@@ -40,6 +40,10 @@ public:
     void execute(const System& sys) override;
     void write(const std::string& timeDir, const System& sys) const override;
     void restore(const std::string& timeDir) override;
+    // Stress sampling needs every pair of the bins (the ghosts' too): one rank only.
+    bool runsOnSeveralRanks() const override { return accumulator_.stressFlowAxis() < 0; }
+    void sumOverRanks(const Communicator& comm) override;
+    void keepRestoredSums(bool keep) override;
 
 private:
     std::string name_;

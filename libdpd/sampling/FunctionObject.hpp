@@ -10,6 +10,7 @@
 
 namespace dpd {
 
+class Communicator;
 class Dictionary;
 class System;
 
@@ -24,6 +25,12 @@ public:
     virtual void write(const std::string& timeDir, const System& sys) const = 0;
     // Carries on from what it wrote under <timeDir>/ before a restart (nothing there is fine).
     virtual void restore(const std::string& timeDir) = 0;
+    // Whether it samples a run decomposed over several ranks: each rank samples its own particles,
+    // sumOverRanks adds them (on every rank, before the first writes), and the sums restored from a
+    // time directory count once (keepRestoredSums is false on all ranks but the first).
+    virtual bool runsOnSeveralRanks() const { return false; }
+    virtual void sumOverRanks(const Communicator&) {}
+    virtual void keepRestoredSums(bool) {}
 };
 
 // Makers take the function's sub-dictionary, its name and the system it samples.

@@ -61,6 +61,7 @@ void System::initialise() {
     pairs = table;
     random_ = PairRandom(seed);
     cells_.setup(box, forceParameters.cutoff);
+    if (ranks && ranks->parallel()) decompose();
     conservative_ = pairs.anyConservative();
     wallForces_ = walls.anyActsWithForces();
     pairKernel_ = conservative_ ? pairKernelFor<kConservativeTerm | kDissipativeTerm | kRandomTerm>(forceParameters)
@@ -71,11 +72,28 @@ void System::initialise() {
             particles.vy[i] = 0.0;
         }
     frozenPerWall_ = walls.assignFrozenVelocities(particles, frozenOfSpecies_);
+    if (domain_) domain_->communicator().sum(frozenPerWall_.data(), frozenPerWall_.size());
     if (!bonds.empty() && !bondPotential) throw std::invalid_argument("bonds without a bond potential");
     bonds.locate(particles);
     wrapPositions();
     walls.recordPositions(particles, frozenOfSpecies_);
     initialised_ = true;
+}
+
+void System::decompose() {
+    if (!bonds.empty()) throw std::invalid_argument("polymer chains cannot run on several ranks yet (run them on one)");
+    if (bondedPairsCorrected()) throw std::invalid_argument("bonded pairs cannot run on several ranks yet");
+    if (slabPlanes.empty()) {
+        domain_ = SlabDomain::balanced(*ranks, cells_, particles, frozenOfSpecies_);
+    } else {
+        std::vector<int> cuts{0};
+        for (int n : slabPlanes) cuts.push_back(cuts.back() + n);
+        if (cuts.back() != cells_.cellsPerAxis()[0] || static_cast<int>(slabPlanes.size()) != ranks->size())
+            throw std::invalid_argument("slab planes per rank do not fit the ranks and the box's planes");
+        domain_ = std::make_shared<SlabDomain>(*ranks, SlabDecomposition::fromCuts(cuts));
+    }
+    domain_->keepOwned(particles, cells_);
+    cells_.setHomePlanes(domain_->homePlanes());
 }
 
 void System::wrapPositions() {
@@ -90,6 +108,14 @@ void System::sortByCell(SortForces forces) {
     // A second sort would have to compose the two orders to find the forces again.
     if (forces == SortForces::Leave && forcesLeftBySort_)
         throw std::logic_error("System::sortByCell: the forces the last sort left behind were never computed again");
+    if (domain_) {
+        // The particles that left for other ranks go, those that came in join, the neighbours' planes
+        // come as ghosts; then all of them are sorted together.
+        dropGhosts();
+        domain_->migrate(particles, cells_, deferredCrossings_);
+        domain_->addGhosts(particles, cells_);
+        ghostsHeld_ = true;
+    }
     cells_.sortParticles(particles, frozenOfSpecies_, forces);
     if (!bonds.empty()) bonds.locate(particles);
     forcesLeftBySort_ = forces == SortForces::Leave;
@@ -137,7 +163,17 @@ WallCounters System::applyWalls() {
     return walls.reflect(s);
 }
 
-void System::completeWalls() { walls.completeStep(particles, frozenOfSpecies_, box, deferredCrossings_); }
+void System::completeWalls() {
+    dropGhosts();
+    walls.completeStep(particles, frozenOfSpecies_, box, deferredCrossings_);
+}
+
+void System::dropGhosts() {
+    if (!ghostsHeld_) return;
+    if (forcesLeftBySort_) throw std::logic_error("System::dropGhosts: the forces the last sort left behind were never computed");
+    domain_->dropGhosts(particles, cells_);
+    ghostsHeld_ = false;
+}
 
 std::size_t System::countMobile() const {
     std::size_t n = 0;

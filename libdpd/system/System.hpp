@@ -10,6 +10,7 @@
 #include "forces/ChainBonds.hpp"
 #include "forces/DpdPairForce.hpp"
 #include "neighbour/CellList.hpp"
+#include "parallel/SlabDomain.hpp"
 #include "random/PairRandom.hpp"
 #include "walls/WallList.hpp"
 
@@ -45,6 +46,10 @@ public:
     std::int64_t step = 0;
     double time = 0.0;
     StepTimes* stepTimes = nullptr;  // when set, the methods below add their times to it
+    // The ranks that run this system together: with more than one, initialise() cuts the box in
+    // slabs along x and keeps this rank's particles (parallel/SlabDomain.hpp); null or one rank: all.
+    const Communicator* ranks = nullptr;
+    std::vector<int> slabPlanes;  // cell planes along x per rank, in rank order; empty: balanced
 
     // Call once the fields above are set: lays out the cells, fixes sigma from fluctuation-
     // dissipation, marks frozen pairs as non-interacting, picks the pair evaluator that does just
@@ -57,6 +62,10 @@ public:
     // How many frozen particles each wall owns (moves with its velocity), as set by initialise().
     const std::vector<long>& frozenPerWall() const { return frozenPerWall_; }
     const CellList& cells() const { return cells_; }
+    // This rank's slab of a decomposed run; null when one rank runs the whole box.
+    const SlabDomain* domain() const { return domain_.get(); }
+    // The ranks' sums of a count (the count itself on one rank).
+    long sumOverRanks(long n) const { return domain_ ? domain_->communicator().sum(n) : n; }
     bool usesConservativeForce() const { return conservative_; }
     double dt() const { return forceParameters.dt; }
 
@@ -93,8 +102,12 @@ public:
     bool isInsideSolid(double x, double y, double z) const { return walls.isInsideSolid({x, y, z}); }
     // Finishes what the walls left for the end of the step (bounce-forward crossings: mirrored and
     // reversed with the velocity the step gave them) and lets them record where the next step starts.
-    // Every integrator calls it once the velocities of the step are complete.
+    // Every integrator calls it once the velocities of the step are complete. In a decomposed run it
+    // first lets go of the ghosts the last sort took in (dropGhosts).
     void completeWalls();
+    // In a decomposed run, drops the neighbours' particles that the last sortByCell added for the pair
+    // forces, so that the particles are this rank's own again (nothing on one rank).
+    void dropGhosts();
     // Moves the clock on by one step.
     void advanceClock() { ++step; time += forceParameters.dt; }
 
@@ -103,9 +116,12 @@ public:
 
 private:
     WallStep wallStep();  // what the walls act on at this step
+    void decompose();     // this rank's slab of the box (initialise, with several ranks)
 
     using PairKernel = void (*)(Particles&, const PairLoopContext&, const PairForceParameters&);
     CellList cells_;
+    std::shared_ptr<const SlabDomain> domain_;
+    bool ghostsHeld_ = false;  // the particles hold the neighbours' ghosts (from sortByCell to dropGhosts)
     PairRandom random_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     PairKernel pairKernel_ = nullptr;

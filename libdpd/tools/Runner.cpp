@@ -6,7 +6,9 @@
 #include "io/TimeDirectories.hpp"
 #include "io/TimeDirectoryWriter.hpp"
 #include "case/ControlDict.hpp"
+#include "case/DecomposeParDict.hpp"
 #include "case/DpdProperties.hpp"
+#include "parallel/Communicator.hpp"
 #include "system/Monitors.hpp"
 #include "system/System.hpp"
 #include "core/ThreadBudget.hpp"
@@ -43,6 +45,18 @@ bool forcesStored(const Particles& p) {
     return false;
 }
 
+// Whether the snapshot held forces (on any rank's part of it).
+bool forcesStored(const System& sys) {
+    const bool here = forcesStored(sys.particles);
+    return sys.domain() ? !sys.domain()->communicator().all(!here) : here;
+}
+
+// A stream that writes nothing: the log of a rank other than the first.
+class NullBuffer : public std::streambuf {
+protected:
+    int overflow(int c) override { return c; }
+};
+
 std::string vectorText(const Eigen::Vector3d& v) {
     std::ostringstream os;
     os << std::setprecision(6) << "(" << v.x() << " " << v.y() << " " << v.z() << ")";
@@ -57,6 +71,7 @@ std::string clockText(double seconds) {
     return os.str();
 }
 
+// The state as a snapshot; in a decomposed run this rank's particles only (see wholeSnapshot).
 Snapshot snapshotOf(const System& sys) {
     Snapshot s;
     s.box = sys.box;
@@ -67,6 +82,27 @@ Snapshot snapshotOf(const System& sys) {
     s.step = sys.step;
     s.bonds = sys.bonds.bonds();
     return s;
+}
+
+// Every rank's part of a snapshot on the first rank, in the order of one rank's run (the file a
+// single rank would write); the snapshot itself elsewhere, or on one rank.
+Snapshot wholeSnapshot(const System& sys, const Snapshot& part) {
+    if (!sys.domain()) return part;
+    Snapshot s = part;
+    s.particles = sys.domain()->gather(part.particles);
+    return s;
+}
+
+// What the walls did on every rank together (their counts on one rank).
+WallCounters countsOfEveryRank(const System& sys, WallCounters c) {
+    if (!sys.domain()) return c;
+    const Communicator& comm = sys.domain()->communicator();
+    c.returned.resize(sys.walls.size(), 0);
+    c.crossed.resize(sys.walls.size(), 0);
+    comm.sum(c.returned.data(), c.returned.size());
+    comm.sum(c.crossed.data(), c.crossed.size());
+    c.insideAfter = comm.sum(c.insideAfter);
+    return c;
 }
 
 void printWalls(std::ostream& log, const System& sys) {
@@ -81,16 +117,19 @@ void printWalls(std::ostream& log, const System& sys) {
 void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const ThreadUse& threads,
                  const Integrator& integrator,
                  const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes) {
-    const std::size_t mobile = sys.countMobile();
-    log << "Case           : " << caseDir << "\n"
-        << "Threads        : " << threads.used << " of " << threads.available
+    const std::size_t mobile = static_cast<std::size_t>(sys.sumOverRanks(static_cast<long>(sys.countMobile())));
+    const std::size_t particles = static_cast<std::size_t>(sys.sumOverRanks(static_cast<long>(sys.particles.size())));
+    log << "Case           : " << caseDir << "\n";
+    if (sys.domain())
+        log << "Ranks          : " << sys.domain()->communicator().size() << ", slabs of cell planes along x "
+            << sys.domain()->slabs().describe() << " (of " << sys.domain()->slabs().planes() << ")\n";
+    log << "Threads        : " << threads.used << " of " << threads.available << (sys.domain() ? " on the first rank" : "")
         << (threads.used < threads.available ? " (fewer particles than " + std::to_string(kParticlesPerThread) +
                                                    " per thread: more would wait on each other)"
                                              : std::string())
         << "\n"
         << "Dimension      : " << sys.box.dimension << "\n"
-        << "Particles      : " << sys.particles.size() << " (" << mobile << " mobile, "
-        << sys.particles.size() - mobile << " frozen)\n"
+        << "Particles      : " << particles << " (" << mobile << " mobile, " << particles - mobile << " frozen)\n"
         << "Integrator     : " << integrator.name() << ", deltaT " << control.deltaT << "\n"
         << "Pair force     : dissipative + random" << (sys.usesConservativeForce() ? " + conservative" : "")
         << (sys.forceParameters.weightExponent == 2.0 ? "" : ", generalised weight") << "\n"
@@ -115,20 +154,38 @@ public:
         const DpdModel model = readDpdProperties(caseDir_);
         const std::string start = startTimeName(caseDir_, control);
         const std::string snapshotFile = (fs::path(caseDir_) / start / "particles.h5").string();
-        System sys = buildSystem(model, readSnapshot(snapshotFile), control.deltaT, snapshotFile);
+        const Communicator& world = Communicator::world();
+        const DecomposeSettings decomposition = readDecomposeParDict(caseDir_, world.size());
+        Snapshot snapshot = readSnapshot(snapshotFile);
+        checkPlanesFitBox(decomposition, snapshot.box, model.cutoff);
+        System sys = buildSystem(model, std::move(snapshot), control.deltaT, snapshotFile, &world, decomposition.planes);
         FunctionObjects functions = FunctionObjects::read(control.functions, sys);
         const auto integrator = makeIntegrator(model.integrator);
+        if (sys.domain()) requireDecomposable(*integrator, functions, model, control);
         if (sys.time > 0.0) functions.restore((fs::path(caseDir_) / start).string());
+        // Each rank adds its own samples; what the time directory held counts once.
+        if (sys.domain()) functions.keepRestoredSums(Communicator::world().isRoot());
         const ThreadUse threads = useThreadsForParticles(sys.particles.size());
-        const bool restartForces = forcesStored(sys.particles);
+        const bool restartForces = forcesStored(sys);
         sys.sortByCell();
         if (!restartForces) sys.computeForces();
+        sys.dropGhosts();
+        totalParticles_ = static_cast<double>(sys.sumOverRanks(static_cast<long>(sys.particles.size())));
         printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes);
         log_.flush();  // the set-up shows in a log file at once, not with the first report
         loop(sys, control, model, functions, *integrator);
     }
 
 private:
+    // What a decomposed run cannot do yet: said before anything runs, at the keyword that asks for it.
+    static void requireDecomposable(const Integrator& integrator, const FunctionObjects& functions, const DpdModel& model,
+                                    const RunControl& control) {
+        if (!integrator.runsOnSeveralRanks())
+            model.integrator.coeffs.fail("type", integrator.name() + " cannot run on several ranks yet (GrootWarren and Euler can)");
+        const std::string single = functions.firstSingleRank();
+        if (!single.empty()) control.functions.fail(single, "this function object cannot run on several ranks yet");
+    }
+
     void loop(System& sys, const RunControl& control, const DpdModel& model, FunctionObjects& functions,
               Integrator& integrator) {
         const FlowAxes flowAxes = flowAxesOf(sys);
@@ -162,7 +219,7 @@ private:
                 const double rate = (k - stepsAtReport) / std::chrono::duration<double>(now - tReport).count();
                 tReport = now;
                 stepsAtReport = k;
-                printReport(sys, m, interval, elapsed, rate, nSteps - k);
+                printReport(sys, m, countsOfEveryRank(sys, interval), elapsed, rate, nSteps - k);
                 interval = WallCounters();
             }
             checkStability(sys, m, model);
@@ -171,7 +228,7 @@ private:
         }
         const double total = std::chrono::duration<double>(Clock::now() - t0).count();
         log_ << "\nRun finished: " << nSteps << " steps in " << std::setprecision(4) << total << " s, "
-             << std::setprecision(4) << (total > 0 ? sys.particles.size() * nSteps / total : 0.0)
+             << std::setprecision(4) << (total > 0 ? totalParticles_ * nSteps / total : 0.0)
              << " particle-steps/s\nEnd\n";
     }
 
@@ -194,7 +251,7 @@ private:
                  << sys.bondPotential->maxLength() << "\n";
         log_ << "    ExecutionTime = " << std::setprecision(5) << elapsed << " s   steps/s = " << std::setprecision(4)
              << stepsPerSecond << "   particle-steps/s = " << std::setprecision(4)
-             << stepsPerSecond * sys.particles.size() << "   time left = " << clockText(stepsLeft / stepsPerSecond)
+             << stepsPerSecond * totalParticles_ << "   time left = " << clockText(stepsLeft / stepsPerSecond)
              << "\n\n";
         log_.flush();
     }
@@ -216,8 +273,9 @@ private:
     [[noreturn]] void stopUnstable(const System& sys, const std::string& problem) {
         const std::string dir = (fs::path(caseDir_) / timeName(lastGood_.time)).string();
         // Only the particles: the sampling of that time, if it was written, stays as it was.
-        if (!fs::exists(fs::path(dir) / "particles.h5"))
-            writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& d) { writeSnapshot(d, lastGood_); });
+        const Snapshot whole = wholeSnapshot(sys, lastGood_);
+        if (Communicator::world().isRoot() && !fs::exists(fs::path(dir) / "particles.h5"))
+            writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& d) { writeSnapshot(d, whole); });
         throw InstabilityError("the run went unstable at time " + timeName(sys.time) + " (step " +
                                std::to_string(sys.step) + "): " + problem + ". The last good state, time " +
                                timeName(lastGood_.time) + ", is written to " + dir);
@@ -237,20 +295,29 @@ private:
 
     // Writes the state just checked (lastGood_) and the function objects' data, as one directory.
     void write(const FunctionObjects& functions, const System& sys) {
-        writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& dir) {
-            writeSnapshot(dir, lastGood_);
-            functions.write(dir, sys);
-        });
+        const Snapshot whole = wholeSnapshot(sys, lastGood_);
+        const FunctionObjects summed = sys.domain() ? functions.summedOverRanks(sys.domain()->communicator()) : FunctionObjects();
+        if (Communicator::world().isRoot())
+            writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& dir) {
+                writeSnapshot(dir, whole);
+                (sys.domain() ? summed : functions).write(dir, sys);
+            });
         log_ << "Writing time " << timeName(lastGood_.time) << "\n";
     }
 
     std::string caseDir_;
     std::ostream& log_;
     Snapshot lastGood_;
+    double totalParticles_ = 0.0;  // on every rank together
 };
 
 }  // namespace
 
-void runCase(const std::string& caseDir, std::ostream& log) { RunLoop(caseDir, log).run(); }
+void runCase(const std::string& caseDir, std::ostream& log) {
+    // The first rank writes the log; the others run silently beside it.
+    NullBuffer nothing;
+    std::ostream silent(&nothing);
+    RunLoop(caseDir, Communicator::world().isRoot() ? log : silent).run();
+}
 
 }  // namespace dpd

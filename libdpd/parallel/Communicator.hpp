@@ -1,0 +1,51 @@
+#pragma once
+// The ranks of a run and what they say to each other (docs/parallel.md). With MPI (OpenMPI) built in
+// and the program started under mpirun, world() is MPI_COMM_WORLD; otherwise it is one rank and every
+// call below is the identity, so the serial code path pays nothing.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace dpd {
+
+class Communicator {
+public:
+    // The process's ranks: MPI_COMM_WORLD once an MpiSession has started MPI, else a single rank.
+    static const Communicator& world();
+
+    int rank() const { return rank_; }
+    int size() const { return size_; }
+    bool isRoot() const { return rank_ == 0; }
+    bool parallel() const { return size_ > 1; }
+
+    // Every rank sends send[r] to rank r and receives what each rank sent it, concatenated in rank
+    // order; counts[r] says how many bytes came from rank r. send.size() must be size().
+    void exchange(const std::vector<std::vector<char>>& send, std::vector<char>& received,
+                  std::vector<std::size_t>& counts) const;
+    // Every rank's bytes, concatenated in rank order, on the root only (elsewhere `all` is left empty);
+    // counts[r] the bytes of rank r (on the root).
+    void gather(const std::vector<char>& mine, std::vector<char>& all, std::vector<std::size_t>& counts) const;
+    // Element-wise sums over the ranks, in place, the same on every rank.
+    void sum(double* values, std::size_t n) const;
+    void sum(long* values, std::size_t n) const;
+    long sum(long value) const { sum(&value, 1); return value; }
+    double sum(double value) const { sum(&value, 1); return value; }
+    // Whether the value holds on every rank (a logical and).
+    bool all(bool value) const;
+    // The root's bytes on every rank.
+    void broadcast(std::vector<char>& bytes) const;
+    // Stops every rank (MPI_Abort) with this exit status: for an error met by one rank alone, which
+    // would otherwise leave the others waiting.
+    [[noreturn]] void abort(int status) const;
+
+private:
+    Communicator() = default;
+    friend class MpiSession;
+    int rank_ = 0;
+    int size_ = 1;
+};
+
+// Whether this build can run on several ranks (MPI found when it was configured).
+bool builtWithMpi();
+
+}  // namespace dpd

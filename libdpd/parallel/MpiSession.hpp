@@ -1,0 +1,17 @@
+#pragma once
+// Starts MPI for the life of a program (a thin main makes one first) and ends it. Without MPI in the
+// build, or when the program was not started by mpirun, the run is one rank as before.
+namespace dpd {
+
+class MpiSession {
+public:
+    MpiSession(int& argc, char**& argv);
+    ~MpiSession();
+    MpiSession(const MpiSession&) = delete;
+    MpiSession& operator=(const MpiSession&) = delete;
+
+private:
+    bool started_ = false;
+};
+
+}  // namespace dpd

@@ -1,0 +1,186 @@
+#include "parallel/SlabDomain.hpp"
+
+#include "parallel/ParticleRecord.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace dpd {
+
+namespace {
+
+// Keeps particles [begin, end) of p.
+template <class Array>
+void keepRange(Array& a, std::size_t begin, std::size_t end) {
+    if (begin > 0) std::copy(a.begin() + static_cast<long>(begin), a.begin() + static_cast<long>(end), a.begin());
+    a.resize(end - begin);
+}
+
+void keepRange(Particles& p, std::size_t begin, std::size_t end) {
+    for (auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) keepRange(*a, begin, end);
+    keepRange(p.id, begin, end);
+    keepRange(p.species, begin, end);
+}
+
+// Keeps the particles whose keep[i] is set, in their order.
+template <class Array>
+void keepMarked(Array& a, const std::vector<std::uint8_t>& keep) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (keep[i]) a[k++] = a[i];
+    a.resize(k);
+}
+
+void keepMarked(Particles& p, const std::vector<std::uint8_t>& keep) {
+    for (auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) keepMarked(*a, keep);
+    keepMarked(p.id, keep);
+    keepMarked(p.species, keep);
+}
+
+// Appends q's particles to p.
+void append(Particles& p, const Particles& q) {
+    auto add = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+    add(p.rx, q.rx); add(p.ry, q.ry); add(p.rz, q.rz);
+    add(p.vx, q.vx); add(p.vy, q.vy); add(p.vz, q.vz);
+    add(p.fx, q.fx); add(p.fy, q.fy); add(p.fz, q.fz);
+    add(p.id, q.id);
+    add(p.species, q.species);
+}
+
+// What goes to one rank in a migration: a count of particles and of deferred crossings, then both.
+struct MigrationHeader {
+    std::uint64_t particles = 0, deferred = 0;
+};
+
+}  // namespace
+
+SlabDomain::SlabDomain(const Communicator& comm, SlabDecomposition slabs) : comm_(&comm), slabs_(std::move(slabs)) {}
+
+std::shared_ptr<SlabDomain> SlabDomain::balanced(const Communicator& comm, const CellList& cells, const Particles& p,
+                                                 const std::vector<std::uint8_t>& frozenOfSpecies) {
+    std::vector<double> weights(static_cast<std::size_t>(cells.cellsPerAxis()[0]), 0.0);
+    const SlabDomain probe(comm, SlabDecomposition(cells.cellsPerAxis()[0]));
+    for (std::size_t i = 0; i < p.size(); ++i)
+        weights[probe.planeOf(cells, p.rx[i])] += frozenOfSpecies[p.species[i]] ? SlabDecomposition::kFrozenWeight : 1.0;
+    return std::make_shared<SlabDomain>(comm, SlabDecomposition::balanced(weights, comm.size()));
+}
+
+int SlabDomain::planeOf(const CellList& cells, double x) const { return cells.axisCell(cells.box().wrap(x, 0), 0); }
+
+std::vector<std::uint8_t> SlabDomain::homePlanes() const {
+    const int n = slabs_.planes();
+    std::vector<std::uint8_t> home(static_cast<std::size_t>(n), 0);
+    for (int ix = firstPlane() - 1; ix < endPlane(); ++ix) home[static_cast<std::size_t>((ix + n) % n)] = 1;
+    return home;
+}
+
+void SlabDomain::keepOwned(Particles& p, const CellList& cells) const {
+    std::vector<std::uint8_t> keep(p.size());
+    const int lo = firstPlane(), hi = endPlane();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const int plane = planeOf(cells, p.rx[i]);
+        keep[i] = plane >= lo && plane < hi;
+    }
+    keepMarked(p, keep);
+}
+
+void SlabDomain::migrate(Particles& p, const CellList& cells, std::vector<DeferredCrossing>& deferred) const {
+    const int ranks = comm_->size(), me = comm_->rank();
+    const int lo = firstPlane(), hi = endPlane();
+    std::vector<std::vector<char>> records(ranks), crossings(ranks);
+    std::vector<MigrationHeader> headers(ranks);
+    std::vector<std::uint8_t> keep(p.size(), 1);
+    std::vector<std::uint8_t> deferredLeaves(deferred.size(), 0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const int plane = planeOf(cells, p.rx[i]);
+        if (plane >= lo && plane < hi) continue;
+        const int to = slabs_.ownerOf(plane);
+        keep[i] = 0;
+        appendRecord(p, i, records[to]);
+        ++headers[to].particles;
+        const auto d = std::lower_bound(deferred.begin(), deferred.end(), p.id[i],
+                                        [](const DeferredCrossing& c, std::uint64_t id) { return c.id < id; });
+        if (d != deferred.end() && d->id == p.id[i]) {
+            const std::size_t at = crossings[to].size();
+            crossings[to].resize(at + sizeof(DeferredCrossing));
+            std::memcpy(crossings[to].data() + at, &*d, sizeof(DeferredCrossing));
+            deferredLeaves[static_cast<std::size_t>(d - deferred.begin())] = 1;
+            ++headers[to].deferred;
+        }
+    }
+    std::vector<std::vector<char>> send(ranks);
+    for (int r = 0; r < ranks; ++r) {
+        send[r].resize(sizeof(MigrationHeader));
+        std::memcpy(send[r].data(), &headers[r], sizeof(MigrationHeader));
+        send[r].insert(send[r].end(), records[r].begin(), records[r].end());
+        send[r].insert(send[r].end(), crossings[r].begin(), crossings[r].end());
+    }
+    std::vector<char> received;
+    std::vector<std::size_t> counts;
+    comm_->exchange(send, received, counts);
+
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < deferred.size(); ++k)
+        if (!deferredLeaves[k]) deferred[kept++] = deferred[k];
+    deferred.resize(kept);
+    keepMarked(p, keep);
+    // Those from lower ranks before the rank's own, from higher ranks after: the single rank's order.
+    Particles lower, higher;
+    const char* at = received.data();
+    for (int r = 0; r < ranks; ++r) {
+        const char* next = at + counts[r];
+        MigrationHeader h;
+        std::memcpy(&h, at, sizeof h);
+        at += sizeof h;
+        if (r != me) appendRecords(at, h.particles, r < me ? lower : higher);
+        at += h.particles * sizeof(ParticleRecord);
+        for (std::uint64_t k = 0; k < h.deferred; ++k, at += sizeof(DeferredCrossing)) {
+            DeferredCrossing d;
+            std::memcpy(&d, at, sizeof d);
+            deferred.push_back(d);
+        }
+        at = next;
+    }
+    if (lower.size() > 0) {
+        append(lower, p);
+        p = std::move(lower);
+    }
+    append(p, higher);
+    std::sort(deferred.begin(), deferred.end(), [](const DeferredCrossing& a, const DeferredCrossing& b) { return a.id < b.id; });
+}
+
+void SlabDomain::addGhosts(Particles& p, const CellList& cells) const {
+    const int ranks = comm_->size(), n = slabs_.planes();
+    const int lo = firstPlane(), hi = endPlane();
+    const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
+    std::vector<std::vector<char>> send(ranks);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const int plane = planeOf(cells, p.rx[i]);
+        if (plane == lo) appendRecord(p, i, send[below]);
+        if (plane == hi - 1) appendRecord(p, i, send[above]);
+    }
+    std::vector<char> received;
+    std::vector<std::size_t> counts;
+    comm_->exchange(send, received, counts);
+    appendRecords(received.data(), received.size() / sizeof(ParticleRecord), p);
+}
+
+void SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
+    const int hi = endPlane();
+    const std::size_t begin = cells.cellStart(cells.cellIndex(firstPlane(), 0, 0));
+    const std::size_t end = hi == slabs_.planes() ? p.size() : cells.cellStart(cells.cellIndex(hi, 0, 0));
+    keepRange(p, begin, end);
+}
+
+Particles SlabDomain::gather(const Particles& p) const {
+    std::vector<char> mine, all;
+    mine.reserve(p.size() * sizeof(ParticleRecord));
+    for (std::size_t i = 0; i < p.size(); ++i) appendRecord(p, i, mine);
+    std::vector<std::size_t> counts;
+    comm_->gather(mine, all, counts);
+    Particles out;
+    appendRecords(all.data(), all.size() / sizeof(ParticleRecord), out);
+    return out;
+}
+
+}  // namespace dpd

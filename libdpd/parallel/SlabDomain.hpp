@@ -1,0 +1,63 @@
+#pragma once
+// A rank's part of a run decomposed in slabs along x (docs/parallel.md): the particles of its planes
+// of cells ("owned"), and for the pair loop copies of its neighbours' particles in the plane on
+// either side ("ghosts", one cutoff wide). Every rank keeps the whole box's cell grid (the grid is
+// global, its cells outside the slab and its ghost planes stay empty), so a rank's pair loop visits
+// its own planes' cells and the plane before them as home cells, in the single rank's colour order,
+// and each owned particle receives its forces in the order a single rank gives them: trajectories
+// do not depend on the number of ranks (nor of threads). Nothing goes back: the ghosts' forces are
+// thrown away (each rank does the pairs across its lower face again: the duplicated work).
+//
+// The order of a rank's particles is the single rank's order restricted to them: the cell sort is
+// stable, so particles that come in are put where a single rank would hold them (from lower ranks
+// first, then the rank's own, then from higher ranks: each rank's range of cells follows the one
+// before), and ghosts are sent in their owner's order.
+#include "core/Box.hpp"
+#include "core/Particles.hpp"
+#include "neighbour/CellList.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/SlabDecomposition.hpp"
+#include "walls/Wall.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace dpd {
+
+class SlabDomain {
+public:
+    SlabDomain(const Communicator& comm, SlabDecomposition slabs);
+    // The slabs of a run on comm's ranks, balanced over the particles as read (every rank holds all
+    // of them before keepOwned), cells laid out by `cells`.
+    static std::shared_ptr<SlabDomain> balanced(const Communicator& comm, const CellList& cells, const Particles& p,
+                                                const std::vector<std::uint8_t>& frozenOfSpecies);
+
+    const Communicator& communicator() const { return *comm_; }
+    const SlabDecomposition& slabs() const { return slabs_; }
+    int firstPlane() const { return slabs_.first(comm_->rank()); }
+    int endPlane() const { return slabs_.end(comm_->rank()); }
+    // The planes whose cells this rank's pair loop visits as home cells: its own and the one before.
+    std::vector<std::uint8_t> homePlanes() const;
+
+    // Keeps only this rank's particles, in their order (at the start, where every rank read all).
+    void keepOwned(Particles& p, const CellList& cells) const;
+    // Sends the particles that moved out of this rank's planes (with their deferred wall crossings)
+    // to their owners and takes in those that came; no ghosts may be held.
+    void migrate(Particles& p, const CellList& cells, std::vector<DeferredCrossing>& deferred) const;
+    // Appends copies of the neighbours' particles in the planes next to this rank's.
+    void addGhosts(Particles& p, const CellList& cells) const;
+    // After a sort that held ghosts: keeps the owned particles, [cellStart(first plane), cellStart(end plane)).
+    void dropGhosts(Particles& p, const CellList& cells) const;
+    // Every rank's particles on the root, in rank order: the single rank's order (elsewhere: empty).
+    Particles gather(const Particles& p) const;
+
+private:
+    // The plane a particle's sort will put it in (the sort wraps the position, so the same wrap here).
+    int planeOf(const CellList& cells, double x) const;
+
+    const Communicator* comm_;
+    SlabDecomposition slabs_;
+};
+
+}  // namespace dpd

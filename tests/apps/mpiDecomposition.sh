@@ -1,0 +1,180 @@
+#!/bin/bash
+# Domain decomposition (docs/parallel.md): the same case run by dpdFoamLike on one process and under
+# `mpirun -np N` for N = 1, 2, 3, 4, each with 1 and 2 threads, must write snapshots identical to the
+# bit (every dataset of particles.h5). Scenes: a channel between frozen lattice walls (bounce-back)
+# with a binned profile sampled every step; tunable-slip walls (forces with random numbers, specular);
+# a Couette channel whose frozen walls move along x (frozen particles cross the slabs' faces) with
+# bounce-forward (crossings completed at the end of the step, after the particle may have changed
+# rank); uneven slabs from system/decomposeParDict; a run written on 3 ranks and continued on 2.
+# Particles cross the slabs' faces thousands of times in each run (the flow is along x), so a rank
+# that put a particle in another order than one process would, or lost a force contribution, changes
+# the trajectories within a few hundred steps. The profile's counts must agree exactly, its sums to
+# rounding. Bad decompositions are refused with the file and keyword named.
+#   $1: the directory of the executables, $2: the source directory
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap '[ -z "${KEEP:-}" ] && rm -rf "$work"' EXIT
+. "$src/tests/shellTestFunctions" || exit 1
+py=/usr/bin/python3
+# mpirun as root needs saying so; --oversubscribe: more ranks than this machine's cores.
+mpirun=(mpirun --oversubscribe)
+[ "$(id -u)" -eq 0 ] && mpirun+=(--allow-run-as-root)
+export OMPI_MCA_rmaps_base_oversubscribe=1
+
+command -v mpirun > /dev/null || { echo "mpirun not found (Debian package openmpi-bin)"; exit 1; }
+
+# Two HDF5 files' datasets compared: `exact` every dataset equal to the bit (snapshots); `sums`
+# integers equal, floating-point values within 1e-12 of their size (a profile's sums, which the
+# ranks add in another order than one process).
+compareFiles() {
+    "$py" - "$@" <<'EOD'
+import sys, h5py, numpy as np
+mode, first, second = sys.argv[1:4]
+def load(f):
+    out = {}
+    with h5py.File(f, "r") as h:
+        h.visititems(lambda name, obj: out.__setitem__(name, np.asarray(obj[()])) if isinstance(obj, h5py.Dataset) else None)
+    return out
+a, b = load(first), load(second)
+ok = a.keys() == b.keys()
+if not ok: print("datasets differ:", sorted(set(a) ^ set(b)))
+for k in a.keys() & b.keys():
+    x, y = a[k], b[k]
+    if x.shape != y.shape: ok = False; print(k, "shape", x.shape, y.shape); continue
+    if mode == "sums" and x.dtype.kind == "f" and x.size:
+        gap = float(np.max(np.abs(x - y)))
+        if gap > 1e-12 * max(1.0, float(np.max(np.abs(x)))): ok = False; print(k, "differs by", gap)
+    elif x.tobytes() != y.tobytes(): ok = False; print(k, "differs")
+sys.exit(0 if ok else 1)
+EOD
+}
+sameSnapshot() { compareFiles exact "$1" "$2"; }
+sameSampling() { compareFiles sums "$1" "$2"; }
+
+# Runs case $1 on $2 ranks (0: no mpirun) with $3 threads; the log in $1/log.
+run() {
+    local c=$1 ranks=$2 threads=$3
+    if [ "$ranks" = 0 ]; then
+        OMP_NUM_THREADS=$threads "$bin/dpdFoamLike" -case "$c" > "$c/log" 2>&1
+    else
+        OMP_NUM_THREADS=$threads "${mpirun[@]}" -np "$ranks" "$bin/dpdFoamLike" -case "$c" > "$c/log" 2>&1
+    fi
+}
+
+controlDict() {  # $1 case, $2 endTime, $3 extra entries
+    cat > "$1/system/controlDict" <<EOD
+$header
+startFrom latestTime;
+endTime $2;
+deltaT 0.02;
+writeInterval 200;
+reportInterval 200;
+$3
+EOD
+}
+
+# The reference on one process, then every rank and thread count against it.
+compareRuns() {
+    local name=$1 base=$2 endTime=$3 sampling=${4:-}
+    local ref=$work/$name.ref
+    cp -r "$base" "$ref"
+    run "$ref" 0 1 || { fail "$name: the run on one process failed: $(tail -3 "$ref/log")"; return; }
+    local ranks threads c
+    for ranks in 1 2 3 4; do
+        for threads in 1 2; do
+            c=$work/$name.$ranks.$threads
+            cp -r "$base" "$c"
+            run "$c" "$ranks" "$threads" || { fail "$name on $ranks ranks, $threads threads: $(tail -5 "$c/log")"; continue; }
+            sameSnapshot "$ref/$endTime/particles.h5" "$c/$endTime/particles.h5" ||
+                fail "$name: $ranks ranks x $threads threads differ from one process at time $endTime"
+            if [ -n "$sampling" ]; then
+                sameSampling "$ref/$endTime/sampling/$sampling.h5" "$c/$endTime/sampling/$sampling.h5" ||
+                    fail "$name: the sampling on $ranks ranks x $threads threads differs from one process"
+            fi
+            rm -rf "$c"
+        done
+    done
+    echo "    $name: 1-4 ranks x 1-2 threads as one process"
+}
+
+# 1. A channel between frozen lattice walls, 12 planes of cells along x, body force along x, a binned
+#    profile every step: 2594 particles, 500 steps.
+ch=$work/channel
+writeChannel "$ch" 3.5 "(-6 -3 -4.5)" "(6 3 4.5)" 5
+controlDict "$ch" 10 "functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; } }"
+"$bin/blockFrozenWall" -case "$ch" > "$ch/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall: $(cat "$ch/log.blockFrozenWall")"
+compareRuns channel "$ch" 10 channel
+grep -q "Ranks          : 4, slabs of cell planes along x 0-2 | 3-5 | 6-8 | 9-11 (of 12)" "$work/channel.ref/log" &&
+    fail "the run on one process reports ranks"
+
+# 2. Tunable-slip walls (friction and noise from the walls, specular reflection), no frozen particles.
+ts=$work/tunable
+cp -r "$ch" "$ts"
+rm -rf "$ts"/0
+"$py" - "$ts/constant/dpdProperties" <<'EOD'
+import re, sys
+f = sys.argv[1]
+s = open(f).read()
+s = s.replace("reflection bounceBack;", "reflection specular; tunableSlip { gammaL 1; zc 1; epsilon 1; sigma 0.5; }")
+open(f, "w").write(s)
+EOD
+sed -i -e 's/^wall .*$//' "$ts/system/blockFrozenWallDict"
+controlDict "$ts" 8 ""
+"$bin/blockFrozenWall" -case "$ts" > "$ts/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall (tunable slip): $(cat "$ts/log.blockFrozenWall")"
+compareRuns tunableSlip "$ts" 8
+
+# 3. Couette: the upper wall and its frozen particles move along x at 2, bounce-forward at both walls.
+co=$work/couette
+cp -r "$ch" "$co"
+rm -rf "$co"/0
+sed -i -e 's/upper { type plane; point (0 0 \([0-9.]*\)); normal (0 0 -1); reflection bounceBack; }/upper { type plane; point (0 0 \1); normal (0 0 -1); velocity (2 0 0); reflection bounceForward; }/' \
+    -e 's/lower { type plane; point (0 0 -\([0-9.]*\)); normal (0 0 1); reflection bounceBack; }/lower { type plane; point (0 0 -\1); normal (0 0 1); reflection bounceForward; }/' \
+    -e 's/value (0.05 0 0)/value (0 0 0)/' "$co/constant/dpdProperties"
+grep -q "velocity (2 0 0); reflection bounceForward" "$co/constant/dpdProperties" || fail "the Couette case was not made"
+controlDict "$co" 8 ""
+"$bin/blockFrozenWall" -case "$co" > "$co/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall (Couette): $(cat "$co/log.blockFrozenWall")"
+compareRuns couette "$co" 8
+
+# 4. Uneven slabs from system/decomposeParDict: 2, 3 and 7 planes.
+un=$work/uneven
+cp -r "$ch" "$un.ref"
+run "$un.ref" 0 2 || fail "uneven: reference: $(tail -3 "$un.ref/log")"
+cp -r "$ch" "$un"
+echo "$header numberOfSubdomains 3; method slabs; planes (2 3 7);" > "$un/system/decomposeParDict"
+run "$un" 3 1 || fail "uneven slabs: $(tail -5 "$un/log")"
+grep -q "slabs of cell planes along x 0-1 | 2-4 | 5-11 (of 12)" "$un/log" || fail "uneven slabs not as asked: $(grep Ranks "$un/log")"
+sameSnapshot "$un.ref/10/particles.h5" "$un/10/particles.h5" || fail "uneven slabs differ from one process"
+
+# 5. Written on 3 ranks at time 4, continued on 2 ranks to 10: as one process all the way.
+rs=$work/restart
+cp -r "$ch" "$rs"
+controlDict "$rs" 4 "functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; } }"
+run "$rs" 3 1 || fail "restart, first part: $(tail -5 "$rs/log")"
+controlDict "$rs" 10 "functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; } }"
+run "$rs" 2 2 || fail "restart, second part: $(tail -5 "$rs/log")"
+sameSnapshot "$un.ref/10/particles.h5" "$rs/10/particles.h5" || fail "3 ranks then 2 differ from one process"
+sameSampling "$un.ref/10/sampling/channel.h5" "$rs/10/sampling/channel.h5" || fail "the sampling carried across the restart differs"
+
+# 6. Refusals: subdomains other than the ranks; planes that do not add up to the box's; too many
+#    ranks for the planes (or a slab too thin); an integrator that cannot run decomposed.
+bad=$work/bad
+cp -r "$ch" "$bad"
+echo "$header numberOfSubdomains 4; method slabs;" > "$bad/system/decomposeParDict"
+run "$bad" 2 1
+expectError $? "$bad/log" "system/decomposeParDict" "numberOfSubdomains" "4 subdomains, but the run has 2 ranks"
+echo "$header numberOfSubdomains 2; method slabs; planes (5 6);" > "$bad/system/decomposeParDict"
+run "$bad" 2 1
+expectError $? "$bad/log" "system/decomposeParDict" "planes" "add up to 11, but the box has 12 planes"
+echo "$header numberOfSubdomains 2; method slabs; planes (1 11);" > "$bad/system/decomposeParDict"
+run "$bad" 2 1
+expectError $? "$bad/log" "system/decomposeParDict" "planes" "each of 2 ranks needs at least 2 planes"
+rm "$bad/system/decomposeParDict"
+run "$bad" 13 1
+expectError $? "$bad/log" "12 planes of cells along x" "13 ranks need at least 13"
+sed -i -e 's/type GrootWarren; lambda 0.65;/type Shardlow;/' "$bad/constant/dpdProperties"
+run "$bad" 2 1
+expectError $? "$bad/log" "constant/dpdProperties" "Shardlow cannot run on several ranks yet"
+
+finishTests mpiDecomposition
