@@ -32,6 +32,15 @@ void Particles::add(std::uint64_t particleId, int speciesIndex, double x, double
     species.push_back(static_cast<std::uint8_t>(speciesIndex));
 }
 
+void Particles::append(const Particles& q) {
+    const auto add = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+    add(rx, q.rx); add(ry, q.ry); add(rz, q.rz);
+    add(vx, q.vx); add(vy, q.vy); add(vz, q.vz);
+    add(fx, q.fx); add(fy, q.fy); add(fz, q.fz);
+    add(id, q.id);
+    add(species, q.species);
+}
+
 void Particles::permute(const std::vector<std::uint32_t>& order) {
     ParticleArray<double> scratch;
     for (auto* a : {&rx, &ry, &rz, &vx, &vy, &vz, &fx, &fy, &fz}) permuteArray(*a, order, scratch);

@@ -22,6 +22,8 @@ struct Particles {
     void reserve(std::size_t n);
     void add(std::uint64_t particleId, int speciesIndex, double x, double y, double z,
              double ux = 0.0, double uy = 0.0, double uz = 0.0);
+    // Appends the other's particles after these.
+    void append(const Particles& other);
     // Reorder every array so that new index k holds the particle that was at order[k].
     void permute(const std::vector<std::uint32_t>& order);
     void clearForces();

@@ -172,6 +172,8 @@ void CellList::countingSort() {
     fill_.resize(nKeys);
     std::uint32_t* fill = fill_.data();
     std::uint32_t* order = order_.data();
+    if (leadingTail_ > n) throw std::logic_error("CellList: a leading tail longer than the particles");
+    const std::uint32_t tail = leadingTail_;
     std::vector<std::uint32_t> totals(static_cast<std::size_t>(omp_get_max_threads()), 0);
     start[0] = 0;
 #pragma omp parallel
@@ -196,9 +198,13 @@ void CellList::countingSort() {
             begin = start[k + 1] + before;
             start[k + 1] = begin;
         }
-        for (std::uint32_t i = 0; i < n; ++i)
+        // The leading tail first (setLeadingTail), then the rest, each in array order.
+        for (std::uint32_t i = n - tail; i < n; ++i)
+            if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
+        for (std::uint32_t i = 0; i < n - tail; ++i)
             if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
     }
+    leadingTail_ = 0;
 }
 
 std::size_t CellList::memoryBytes() const {

@@ -38,6 +38,10 @@ public:
     // for a frozen species s).
     void sortParticles(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies,
                        SortForces forces = SortForces::Move);
+    // The next sort (only) takes the last n particles of the arrays as coming before all the others in
+    // the stable order of a cell: a decomposed run appends the particles that came from lower ranks,
+    // which one process would hold first (parallel/SlabDomain.hpp), instead of moving every other.
+    void setLeadingTail(std::size_t n) { leadingTail_ = static_cast<std::uint32_t>(n); }
     // The last sort's permutation: particle k of the sorted arrays was particle order()[k] before it.
     const ParticleArray<std::uint32_t>& order() const { return order_; }
 
@@ -85,6 +89,7 @@ private:
     std::vector<std::uint32_t> start_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     std::vector<std::uint8_t> homePlanes_;  // empty: every plane
+    std::uint32_t leadingTail_ = 0;         // for the next sort only (setLeadingTail)
     // Kept between sorts, so a step allocates nothing.
     ParticleArray<std::uint32_t> keyOf_, order_, fill_;
     std::array<ParticleArray<double>, 3> scratch_;

@@ -106,6 +106,13 @@ void Communicator::sum([[maybe_unused]] long* values, std::size_t n) const {
 #endif
 }
 
+double Communicator::max(double value) const {
+#ifdef DPD_HAVE_MPI
+    if (size_ > 1) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+#endif
+    return value;
+}
+
 bool Communicator::all(bool value) const {
     if (size_ == 1) return value;
     int v = value ? 1 : 0;

@@ -17,14 +17,17 @@ void appendRecord(const Particles& p, std::size_t i, std::vector<char>& bytes) {
 }
 
 void appendRecords(const char* from, std::size_t count, Particles& p) {
+    const std::size_t at = p.size();
+    p.resize(at + count);
     for (std::size_t k = 0; k < count; ++k) {
         ParticleRecord rec;
         std::memcpy(&rec, from + k * sizeof rec, sizeof rec);
-        p.rx.push_back(rec.r[0]); p.ry.push_back(rec.r[1]); p.rz.push_back(rec.r[2]);
-        p.vx.push_back(rec.v[0]); p.vy.push_back(rec.v[1]); p.vz.push_back(rec.v[2]);
-        p.fx.push_back(rec.f[0]); p.fy.push_back(rec.f[1]); p.fz.push_back(rec.f[2]);
-        p.id.push_back(rec.id);
-        p.species.push_back(rec.species);
+        const std::size_t i = at + k;
+        p.rx[i] = rec.r[0]; p.ry[i] = rec.r[1]; p.rz[i] = rec.r[2];
+        p.vx[i] = rec.v[0]; p.vy[i] = rec.v[1]; p.vz[i] = rec.v[2];
+        p.fx[i] = rec.f[0]; p.fy[i] = rec.f[1]; p.fz[i] = rec.f[2];
+        p.id[i] = rec.id;
+        p.species[i] = rec.species;
     }
 }
 

@@ -22,29 +22,24 @@ void keepRange(Particles& p, std::size_t begin, std::size_t end) {
     keepRange(p.species, begin, end);
 }
 
-// Keeps the particles whose keep[i] is set, in their order.
+// Removes the particles at the given indices (increasing), the others kept in their order: the runs
+// between them moved whole (leavers are few, and most lie in the slab's first and last planes).
 template <class Array>
-void keepMarked(Array& a, const std::vector<std::uint8_t>& keep) {
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (keep[i]) a[k++] = a[i];
-    a.resize(k);
+void removeIndices(Array& a, const std::vector<std::size_t>& gone) {
+    if (gone.empty()) return;
+    auto to = a.begin() + static_cast<long>(gone[0]);
+    for (std::size_t k = 0; k < gone.size(); ++k) {
+        const auto from = a.begin() + static_cast<long>(gone[k] + 1);
+        const auto end = k + 1 < gone.size() ? a.begin() + static_cast<long>(gone[k + 1]) : a.end();
+        to = std::copy(from, end, to);
+    }
+    a.resize(a.size() - gone.size());
 }
 
-void keepMarked(Particles& p, const std::vector<std::uint8_t>& keep) {
-    for (auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) keepMarked(*a, keep);
-    keepMarked(p.id, keep);
-    keepMarked(p.species, keep);
-}
-
-// Appends q's particles to p.
-void append(Particles& p, const Particles& q) {
-    auto add = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
-    add(p.rx, q.rx); add(p.ry, q.ry); add(p.rz, q.rz);
-    add(p.vx, q.vx); add(p.vy, q.vy); add(p.vz, q.vz);
-    add(p.fx, q.fx); add(p.fy, q.fy); add(p.fz, q.fz);
-    add(p.id, q.id);
-    add(p.species, q.species);
+void removeIndices(Particles& p, const std::vector<std::size_t>& gone) {
+    for (auto* a : {&p.rx, &p.ry, &p.rz, &p.vx, &p.vy, &p.vz, &p.fx, &p.fy, &p.fz}) removeIndices(*a, gone);
+    removeIndices(p.id, gone);
+    removeIndices(p.species, gone);
 }
 
 // What goes to one rank in a migration: a count of particles and of deferred crossings, then both.
@@ -75,27 +70,28 @@ std::vector<std::uint8_t> SlabDomain::homePlanes() const {
 }
 
 void SlabDomain::keepOwned(Particles& p, const CellList& cells) const {
-    std::vector<std::uint8_t> keep(p.size());
+    std::vector<std::size_t> others;
     const int lo = firstPlane(), hi = endPlane();
     for (std::size_t i = 0; i < p.size(); ++i) {
         const int plane = planeOf(cells, p.rx[i]);
-        keep[i] = plane >= lo && plane < hi;
+        if (plane < lo || plane >= hi) others.push_back(i);
     }
-    keepMarked(p, keep);
+    removeIndices(p, others);
 }
 
-void SlabDomain::migrate(Particles& p, const CellList& cells, std::vector<DeferredCrossing>& deferred) const {
+void SlabDomain::migrate(Particles& p, const CellList& cells, std::vector<DeferredCrossing>& deferred,
+                         Particles& fromLower) const {
     const int ranks = comm_->size(), me = comm_->rank();
     const int lo = firstPlane(), hi = endPlane();
     std::vector<std::vector<char>> records(ranks), crossings(ranks);
     std::vector<MigrationHeader> headers(ranks);
-    std::vector<std::uint8_t> keep(p.size(), 1);
+    std::vector<std::size_t> leavers;
     std::vector<std::uint8_t> deferredLeaves(deferred.size(), 0);
     for (std::size_t i = 0; i < p.size(); ++i) {
         const int plane = planeOf(cells, p.rx[i]);
         if (plane >= lo && plane < hi) continue;
         const int to = slabs_.ownerOf(plane);
-        keep[i] = 0;
+        leavers.push_back(i);
         appendRecord(p, i, records[to]);
         ++headers[to].particles;
         const auto d = std::lower_bound(deferred.begin(), deferred.end(), p.id[i],
@@ -123,16 +119,16 @@ void SlabDomain::migrate(Particles& p, const CellList& cells, std::vector<Deferr
     for (std::size_t k = 0; k < deferred.size(); ++k)
         if (!deferredLeaves[k]) deferred[kept++] = deferred[k];
     deferred.resize(kept);
-    keepMarked(p, keep);
-    // Those from lower ranks before the rank's own, from higher ranks after: the single rank's order.
-    Particles lower, higher;
+    removeIndices(p, leavers);
+    // Those from higher ranks after the rank's own, from lower ranks apart (they lead the sort).
+    fromLower = Particles();
     const char* at = received.data();
     for (int r = 0; r < ranks; ++r) {
         const char* next = at + counts[r];
         MigrationHeader h;
         std::memcpy(&h, at, sizeof h);
         at += sizeof h;
-        if (r != me) appendRecords(at, h.particles, r < me ? lower : higher);
+        if (r != me) appendRecords(at, h.particles, r < me ? fromLower : p);
         at += h.particles * sizeof(ParticleRecord);
         for (std::uint64_t k = 0; k < h.deferred; ++k, at += sizeof(DeferredCrossing)) {
             DeferredCrossing d;
@@ -141,24 +137,20 @@ void SlabDomain::migrate(Particles& p, const CellList& cells, std::vector<Deferr
         }
         at = next;
     }
-    if (lower.size() > 0) {
-        append(lower, p);
-        p = std::move(lower);
-    }
-    append(p, higher);
     std::sort(deferred.begin(), deferred.end(), [](const DeferredCrossing& a, const DeferredCrossing& b) { return a.id < b.id; });
 }
 
-void SlabDomain::addGhosts(Particles& p, const CellList& cells) const {
+void SlabDomain::addGhosts(const Particles& fromLower, Particles& p, const CellList& cells) const {
     const int ranks = comm_->size(), n = slabs_.planes();
     const int lo = firstPlane(), hi = endPlane();
     const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
     std::vector<std::vector<char>> send(ranks);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const int plane = planeOf(cells, p.rx[i]);
-        if (plane == lo) appendRecord(p, i, send[below]);
-        if (plane == hi - 1) appendRecord(p, i, send[above]);
-    }
+    for (const Particles* q : {&fromLower, static_cast<const Particles*>(&p)})
+        for (std::size_t i = 0; i < q->size(); ++i) {
+            const int plane = planeOf(cells, q->rx[i]);
+            if (plane == lo) appendRecord(*q, i, send[below]);
+            if (plane == hi - 1) appendRecord(*q, i, send[above]);
+        }
     std::vector<char> received;
     std::vector<std::size_t> counts;
     comm_->exchange(send, received, counts);

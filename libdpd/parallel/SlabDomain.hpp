@@ -9,9 +9,9 @@
 // thrown away (each rank does the pairs across its lower face again: the duplicated work).
 //
 // The order of a rank's particles is the single rank's order restricted to them: the cell sort is
-// stable, so particles that come in are put where a single rank would hold them (from lower ranks
-// first, then the rank's own, then from higher ranks: each rank's range of cells follows the one
-// before), and ghosts are sent in their owner's order.
+// stable, so particles that come in are sorted as if a single rank held them (from lower ranks first,
+// then the rank's own, then from higher ranks: each rank's range of cells follows the one before),
+// and ghosts are sent in their owner's order.
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
 #include "neighbour/CellList.hpp"
@@ -43,10 +43,13 @@ public:
     // Keeps only this rank's particles, in their order (at the start, where every rank read all).
     void keepOwned(Particles& p, const CellList& cells) const;
     // Sends the particles that moved out of this rank's planes (with their deferred wall crossings)
-    // to their owners and takes in those that came; no ghosts may be held.
-    void migrate(Particles& p, const CellList& cells, std::vector<DeferredCrossing>& deferred) const;
-    // Appends copies of the neighbours' particles in the planes next to this rank's.
-    void addGhosts(Particles& p, const CellList& cells) const;
+    // to their owners and takes in those that came; no ghosts may be held. Those from higher ranks
+    // are appended to p; those from lower ranks, which one process holds before this rank's own, go
+    // to fromLower (appended last, after the ghosts, they lead the next sort: CellList::setLeadingTail).
+    void migrate(Particles& p, const CellList& cells, std::vector<DeferredCrossing>& deferred, Particles& fromLower) const;
+    // Appends to p copies of the neighbours' particles in the planes next to this rank's; this rank's
+    // particles are `fromLower` (migrate's) and then p, in one process's order.
+    void addGhosts(const Particles& fromLower, Particles& p, const CellList& cells) const;
     // After a sort that held ghosts: keeps the owned particles, [cellStart(first plane), cellStart(end plane)).
     void dropGhosts(Particles& p, const CellList& cells) const;
     // Every rank's particles on the root, in rank order: the single rank's order (elsewhere: empty).

@@ -23,9 +23,11 @@ System makeStandardFluid(const StandardFluidSettings& s) {
     fillRandom(sys.particles, sys.box, sys.box.lo, sys.box.hi, s.density, 0,
                [](double, double, double) { return true; }, random, 0);
     maxwellVelocities(sys.particles, 0, sys.particles.size(), s.dimension, s.kT, random);
+    sys.ranks = s.ranks;
     sys.initialise();
     sys.sortByCell();
     sys.computeForces();
+    sys.dropGhosts();
     return sys;
 }
 

@@ -16,6 +16,8 @@ struct StandardFluidSettings {
     std::uint64_t seed = 1;
     // Relative edge lengths x y z (y unused in 2-D); the volume stays particles / density.
     Eigen::Vector3d aspect{1.0, 1.0, 1.0};
+    // Several ranks: the box is cut in slabs and this process keeps its own (System::ranks).
+    const Communicator* ranks = nullptr;
 };
 
 // A box (cubic, square in 2-D, unless `aspect` says otherwise) holding about `particles` at the density, random positions, Maxwellian

@@ -104,7 +104,6 @@ void System::wrapPositions() {
 }
 
 void System::sortByCell(SortForces forces) {
-    const ScopedTimer timer(stepTimes ? &stepTimes->sort : nullptr);
     // A second sort would have to compose the two orders to find the forces again.
     if (forces == SortForces::Leave && forcesLeftBySort_)
         throw std::logic_error("System::sortByCell: the forces the last sort left behind were never computed again");
@@ -112,10 +111,19 @@ void System::sortByCell(SortForces forces) {
         // The particles that left for other ranks go, those that came in join, the neighbours' planes
         // come as ghosts; then all of them are sorted together.
         dropGhosts();
-        domain_->migrate(particles, cells_, deferredCrossings_);
-        domain_->addGhosts(particles, cells_);
+        Particles fromLower;
+        {
+            const ScopedTimer timer(stepTimes ? &stepTimes->migrate : nullptr);
+            domain_->migrate(particles, cells_, deferredCrossings_, fromLower);
+        }
+        const ScopedTimer timer(stepTimes ? &stepTimes->ghosts : nullptr);
+        domain_->addGhosts(fromLower, particles, cells_);
+        // Those from lower ranks last in the arrays, first in the sort's order (one process's order).
+        particles.append(fromLower);
+        cells_.setLeadingTail(fromLower.size());
         ghostsHeld_ = true;
     }
+    const ScopedTimer timer(stepTimes ? &stepTimes->sort : nullptr);
     cells_.sortParticles(particles, frozenOfSpecies_, forces);
     if (!bonds.empty()) bonds.locate(particles);
     forcesLeftBySort_ = forces == SortForces::Leave;

@@ -28,6 +28,8 @@ struct StepTimes {
     double sort = 0.0;    // sortByCell
     double forces = 0.0;  // computeForces: pair forces and body force
     double walls = 0.0;   // applyWalls
+    double migrate = 0.0; // a decomposed run's particles sent to the ranks they moved to (in sortByCell)
+    double ghosts = 0.0;  // and the neighbours' planes taken in as ghosts (in sortByCell)
 };
 
 class System {

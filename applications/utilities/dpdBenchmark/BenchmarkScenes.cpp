@@ -11,9 +11,11 @@
 
 namespace dpd {
 
-BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension) {
+BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension, const Communicator& ranks) {
     StandardFluidSettings fluid;
-    fluid.particles = particles;
+    fluid.particles = particles * static_cast<std::size_t>(ranks.size());
+    fluid.aspect.x() = ranks.size();
+    fluid.ranks = &ranks;
     fluid.a = a;
     fluid.dimension = dimension;
     return {"fluid", makeStandardFluid(fluid), FunctionObjects(), -1};

@@ -17,8 +17,9 @@ struct BenchmarkScene {
 };
 
 // The standard fluid: rho 3, a (25 by default; 0 drops the conservative term), gamma 4.5, kT 1,
-// dt 0.04, about `particles` particles.
-BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension);
+// dt 0.04, about `particles` particles. On several ranks (mpirun) `particles` per rank, in a box as
+// many cubes long along x as there are ranks, decomposed in slabs: a weak-scaling measurement.
+BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension, const Communicator& ranks);
 
 // The standard fluid with 10 % of its particles in chains of 30 beads (FENE, H 6, r_max 3): what
 // bonds cost.

@@ -2,6 +2,7 @@
 
 #include "forces/PairForceLoop.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
+#include "parallel/Communicator.hpp"
 #include "system/Monitors.hpp"
 
 #include <omp.h>
@@ -88,8 +89,16 @@ BenchmarkResult timeScene(const BenchmarkScene& scene, int threads, const Benchm
     // The CPU rate has its own best segment: on a shared machine the segment least descheduled (best
     // wall time) need not be the one least slowed by others' use of the caches (least CPU time).
     Segment best, worst, leastCpu;
+    // On several ranks a segment takes as long as its slowest rank, and costs the CPU time of all.
+    const Communicator* comm = sys.domain() ? &sys.domain()->communicator() : nullptr;
     for (int k = 0; k < settings.segments; ++k) {
-        const Segment s = runSegment(sys, integrator, sampling, settings.steps);
+        if (comm) comm->max(0.0);  // start together
+        Segment s = runSegment(sys, integrator, sampling, settings.steps);
+        if (comm) {
+            s.wall = comm->max(s.wall);
+            s.cpu = comm->sum(s.cpu);
+            s.stolen = comm->max(s.stolen);  // the machine's counter, the same for every rank on it
+        }
         if (k == 0 || s.wall < best.wall) best = s;
         if (k == 0 || s.wall > worst.wall) worst = s;
         if (k == 0 || s.cpu < leastCpu.cpu) leastCpu = s;
@@ -97,22 +106,25 @@ BenchmarkResult timeScene(const BenchmarkScene& scene, int threads, const Benchm
 
     BenchmarkResult r;
     r.scene = scene.name;
-    r.particles = sys.particles.size();
+    r.particles = static_cast<std::size_t>(sys.sumOverRanks(static_cast<long>(sys.particles.size())));
     r.threads = threads;
+    r.ranks = comm ? comm->size() : 1;
     const double particleSteps = static_cast<double>(r.particles) * settings.steps;
     r.rate = particleSteps / best.wall;
-    r.cpuRate = particleSteps * threads / leastCpu.cpu;
+    r.cpuRate = particleSteps * threads * r.ranks / leastCpu.cpu;
     r.spread = worst.wall / best.wall - 1.0;
-    r.steal = best.stolen / (best.wall * threads);
+    r.steal = best.stolen / (best.wall * threads * r.ranks);
     r.msPerStep = 1e3 * best.wall / settings.steps;
     r.pairs = best.parts.forces / best.wall;
     r.neighbours = (best.parts.wrap + best.parts.sort) / best.wall;
+    r.exchange = (best.parts.migrate + best.parts.ghosts) / best.wall;
     r.walls = best.parts.walls / best.wall;
     r.sampling = best.sampling / best.wall;
-    r.integration = std::max(0.0, 1.0 - r.pairs - r.neighbours - r.walls - r.sampling);
+    r.integration = std::max(0.0, 1.0 - r.pairs - r.neighbours - r.exchange - r.walls - r.sampling);
+    // Memory: this rank's (ghosts come and go within the step).
     const std::size_t bytes = particleBytes(sys.particles) + sys.cells().memoryBytes() + integrator.memoryBytes() +
                               pairLoopScratchBytes();
-    r.bytesPerParticle = static_cast<double>(bytes) / static_cast<double>(r.particles);
+    r.bytesPerParticle = static_cast<double>(bytes) / static_cast<double>(sys.particles.size());
     r.kT = monitor(sys, scene.flowAxis).kT;
     return r;
 }

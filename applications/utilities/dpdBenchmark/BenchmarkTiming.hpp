@@ -20,7 +20,8 @@ struct BenchmarkSettings {
 struct BenchmarkResult {
     std::string scene;
     std::size_t particles = 0;
-    int threads = 1;
+    int threads = 1;          // per rank
+    int ranks = 1;            // MPI ranks (mpirun -np); particles are those of every rank together
     double rate = 0.0;        // particle-steps per second, best segment, wall clock
     double cpuRate = 0.0;     // particle-steps per second of CPU time x threads, segment of least CPU time
     double spread = 0.0;      // worst segment time / best segment time - 1
@@ -32,6 +33,7 @@ struct BenchmarkResult {
     double msPerStep = 0.0;   // best segment
     // Fractions of the best segment's time.
     double pairs = 0.0, neighbours = 0.0, walls = 0.0, integration = 0.0, sampling = 0.0;
+    double exchange = 0.0;    // particles between ranks: migration and ghosts (first rank's share)
     double bytesPerParticle = 0.0;
     double kT = 0.0;          // at the end, as a check that the run stayed sane
 };

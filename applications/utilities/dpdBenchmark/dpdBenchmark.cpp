@@ -7,6 +7,9 @@
 
 #include "app/ToolCommandLine.hpp"
 #include "io/AtomicFile.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/MpiSession.hpp"
+#include "parallel/PingPong.hpp"
 
 #include <boost/program_options.hpp>
 
@@ -61,22 +64,40 @@ std::string tableHeader() {
            "# per particle. rate: wall clock; cpuRate: per CPU second x threads; spread: worst/best segment - 1;\n"
            "# steal: share of the best segment's CPU time the hypervisor gave to other guests (shared machine).\n" +
            waitPolicyLine() +
-           "# scene    particles threads  rate       cpuRate    spread  steal   ms/step   pairs neighb walls  integ  sampl  bytes/p  kT\n";
+           "# scene    particles threads ranks  rate       cpuRate    spread  steal   ms/step   pairs neighb  exch  walls  integ  sampl  bytes/p  kT\n";
 }
 
 std::string tableRow(const dpd::BenchmarkResult& r) {
     char line[256];
     std::snprintf(line, sizeof line,
-                  "%-9s %9zu %7d  %9.3e  %9.3e  %6.3f  %6.3f  %8.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %7.1f  %.3f\n",
-                  r.scene.c_str(), r.particles, r.threads, r.rate, r.cpuRate, r.spread, r.steal, r.msPerStep, r.pairs,
-                  r.neighbours, r.walls, r.integration, r.sampling, r.bytesPerParticle, r.kT);
+                  "%-9s %9zu %7d %5d  %9.3e  %9.3e  %6.3f  %6.3f  %8.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %7.1f  %.3f\n",
+                  r.scene.c_str(), r.particles, r.threads, r.ranks, r.rate, r.cpuRate, r.spread, r.steal, r.msPerStep,
+                  r.pairs, r.neighbours, r.exchange, r.walls, r.integration, r.sampling, r.bytesPerParticle, r.kT);
     return line;
+}
+
+// One-way time of messages from 8 bytes to 2 MiB between ranks 0 and 1, with the latency (the
+// smallest message's time) and the bandwidth (the largest message's size over its time).
+std::string pingPongTable(const dpd::Communicator& comm) {
+    std::string table = "# dpdBenchmark -pingpong: one-way time of a message between two ranks (half the round trip)\n"
+                         "# bytes      seconds     MB/s\n";
+    for (std::size_t bytes = 8; bytes <= (std::size_t(2) << 20); bytes *= 8) {
+        const int repeats = bytes < 65536 ? 2000 : 100;
+        dpd::oneWaySeconds(comm, bytes, repeats / 10);  // warm up the path
+        const double t = dpd::oneWaySeconds(comm, bytes, repeats);
+        char line[128];
+        std::snprintf(line, sizeof line, "%9zu  %10.3e  %8.1f\n", bytes, t, bytes / t / 1e6);
+        table += line;
+    }
+    return table;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    return dpd::runTool("dpdBenchmark", [&] {
+    const dpd::MpiSession mpi(argc, argv);
+    const dpd::Communicator& world = dpd::Communicator::world();
+    const int status = dpd::runTool("dpdBenchmark", [&] {
         po::options_description opts("dpdBenchmark: throughput of the standard DPD fluid and of a walled channel\nOptions");
         std::string particles, threads, scenes, output;
         dpd::BenchmarkSettings settings;
@@ -84,7 +105,7 @@ int main(int argc, char** argv) {
         int dimension = 3;
         opts.add_options()("help,h", "print this help")
             ("particles,n", po::value<std::string>(&particles)->default_value("32000,256000"),
-             "particle counts, comma-separated (e.g. 32000,256000,1000000)")
+             "particle counts, comma-separated (e.g. 32000,256000,1000000); per rank under mpirun")
             ("threads", po::value<std::string>(&threads)->default_value("1,2"), "OpenMP thread counts, comma-separated")
             ("scenes", po::value<std::string>(&scenes)->default_value("fluid,channel"), "fluid, chains (the fluid with 10 % of it in chains of 30) and/or channel")
             ("steps", po::value<int>(&settings.steps)->default_value(100), "steps per timed segment")
@@ -92,7 +113,8 @@ int main(int argc, char** argv) {
             ("warmup", po::value<int>(&settings.warmup)->default_value(10), "untimed steps first")
             ("a", po::value<double>(&a)->default_value(25.0), "fluid: conservative amplitude (0 switches the term off)")
             ("dimension", po::value<int>(&dimension)->default_value(3), "fluid: 2 or 3")
-            ("output", po::value<std::string>(&output), "also write the table to this file");
+            ("output", po::value<std::string>(&output), "also write the table to this file")
+            ("pingpong", "under mpirun -np 2: the one-way time of messages between the two ranks (latency, bandwidth)");
         po::variables_map vm;
         try {
             const int style = po::command_line_style::default_style | po::command_line_style::allow_long_disguise;
@@ -101,28 +123,44 @@ int main(int argc, char** argv) {
         } catch (const po::error& e) {
             throw std::invalid_argument(e.what());
         }
-        if (vm.count("help")) { std::cout << opts; return; }
+        if (vm.count("help")) { if (world.isRoot()) std::cout << opts; return; }
+        if (vm.count("pingpong")) {
+            const std::string table = pingPongTable(world);
+            if (world.isRoot()) {
+                std::cout << table;
+                if (!output.empty()) dpd::writeTextFileAtomically(output, table, true);
+            }
+            return;
+        }
         if (settings.steps < 1 || settings.segments < 1 || settings.warmup < 0)
             throw std::invalid_argument("-steps and -segments must be at least 1, -warmup at least 0");
         if (dimension != 2 && dimension != 3) throw std::invalid_argument("-dimension must be 2 or 3");
         const auto counts = parseList<std::size_t>(particles, "particles");
         const auto threadCounts = parseList<int>(threads, "threads");
         const auto sceneNames = parseScenes(scenes);
+        if (world.parallel())
+            for (const std::string& name : sceneNames)
+                if (name != "fluid") throw std::invalid_argument("-scenes: only the fluid runs on several ranks so far");
 
+        // The first rank prints; the others time their slabs beside it.
+        std::ostream& out = std::cout;
+        const bool root = world.isRoot();
         std::string table = tableHeader();
-        std::cout << table << std::flush;
+        if (root) out << table << std::flush;
         for (const std::string& name : sceneNames)
             for (std::size_t n : counts) {
                 const dpd::BenchmarkScene scene =
-                    name == "fluid"    ? dpd::makeFluidScene(n, a, dimension)
+                    name == "fluid"    ? dpd::makeFluidScene(n, a, dimension, world)
                     : name == "chains" ? dpd::makeChainsScene(n, a)
                                        : dpd::makeChannelScene(n);
                 for (int t : threadCounts) {
                     const std::string row = tableRow(dpd::timeScene(scene, t, settings));
-                    std::cout << row << std::flush;
+                    if (root) out << row << std::flush;
                     table += row;
                 }
             }
-        if (!output.empty()) dpd::writeTextFileAtomically(output, table, true);
+        if (root && !output.empty()) dpd::writeTextFileAtomically(output, table, true);
     });
+    if (status != 0 && world.parallel()) world.abort(status);
+    return status;
 }
