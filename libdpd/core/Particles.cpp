@@ -41,6 +41,29 @@ void Particles::append(const Particles& q) {
     add(species, q.species);
 }
 
+void Particles::shorten(std::size_t n, bool keepForces) {
+    for (auto* a : {&rx, &ry, &rz, &vx, &vy, &vz}) a->resize(n);
+    if (!keepForces)
+        for (auto* a : {&fx, &fy, &fz}) a->resize(n);
+    id.resize(n);
+    species.resize(n);
+}
+
+Particles Particles::rotated(std::size_t first) const {
+    Particles out;
+    const auto take = [first](auto& to, const auto& from) {
+        to.reserve(from.size());
+        to.insert(to.end(), from.begin() + static_cast<long>(first), from.end());
+        to.insert(to.end(), from.begin(), from.begin() + static_cast<long>(first));
+    };
+    take(out.rx, rx); take(out.ry, ry); take(out.rz, rz);
+    take(out.vx, vx); take(out.vy, vy); take(out.vz, vz);
+    take(out.fx, fx); take(out.fy, fy); take(out.fz, fz);
+    take(out.id, id);
+    take(out.species, species);
+    return out;
+}
+
 void Particles::permute(const std::vector<std::uint32_t>& order) {
     ParticleArray<double> scratch;
     for (auto* a : {&rx, &ry, &rz, &vx, &vy, &vz, &fx, &fy, &fz}) permuteArray(*a, order, scratch);

@@ -24,6 +24,10 @@ struct Particles {
              double ux = 0.0, double uy = 0.0, double uz = 0.0);
     // Appends the other's particles after these.
     void append(const Particles& other);
+    // Keeps the first n particles; with keepForces the force arrays keep their length.
+    void shorten(std::size_t n, bool keepForces);
+    // A copy with particles [first, size) then [0, first).
+    Particles rotated(std::size_t first) const;
     // Reorder every array so that new index k holds the particle that was at order[k].
     void permute(const std::vector<std::uint32_t>& order);
     void clearForces();

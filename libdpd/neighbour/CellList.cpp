@@ -63,7 +63,8 @@ void CellList::setup(const Box& box, double cutoff) {
         size_[a] = L[a] / n_[a];
         invSize_[a] = 1.0 / size_[a];
     }
-    start_.assign(2 * static_cast<std::size_t>(numCells()) + 1, 0);
+    // Two entries per cell, one more for the discarded particles' key (2 numCells), and the end.
+    start_.assign(2 * static_cast<std::size_t>(numCells()) + 2, 0);
 }
 
 void CellList::sortParticles(Particles& p, SortForces forces) {
@@ -149,6 +150,9 @@ void CellList::sort(Particles& p, SortForces forces) {
         if (split)
             for (long i = b; i < e; ++i) key[i] += isFrozenSpecies(p.species[i]) ? 1u : 0u;
     }
+    const std::uint32_t discardKey = 2 * static_cast<std::uint32_t>(numCells());
+    for (const std::uint32_t i : discarded_) key[i] = discardKey;
+    discarded_.clear();
     countingSort();
 #pragma omp parallel
     {
@@ -172,8 +176,10 @@ void CellList::countingSort() {
     fill_.resize(nKeys);
     std::uint32_t* fill = fill_.data();
     std::uint32_t* order = order_.data();
-    if (leadingTail_ > n) throw std::logic_error("CellList: a leading tail longer than the particles");
-    const std::uint32_t tail = leadingTail_;
+    const auto& visit = visit_;
+    std::size_t visited = 0;
+    for (const auto& [first, end] : visit) visited += end >= first && end <= n ? end - first : n + 1;
+    if (!visit.empty() && visited != n) throw std::logic_error("CellList: the visit order does not cover the particles");
     std::vector<std::uint32_t> totals(static_cast<std::size_t>(omp_get_max_threads()), 0);
     start[0] = 0;
 #pragma omp parallel
@@ -198,13 +204,16 @@ void CellList::countingSort() {
             begin = start[k + 1] + before;
             start[k + 1] = begin;
         }
-        // The leading tail first (setLeadingTail), then the rest, each in array order.
-        for (std::uint32_t i = n - tail; i < n; ++i)
-            if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
-        for (std::uint32_t i = 0; i < n - tail; ++i)
-            if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
+        if (visit.empty()) {
+            for (std::uint32_t i = 0; i < n; ++i)
+                if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
+        } else {  // the ranges in the order given (setVisitOrder)
+            for (const auto& [first, end] : visit)
+                for (std::uint32_t i = first; i < end; ++i)
+                    if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
+        }
     }
-    leadingTail_ = 0;
+    visit_.clear();
 }
 
 std::size_t CellList::memoryBytes() const {

@@ -38,10 +38,14 @@ public:
     // for a frozen species s).
     void sortParticles(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies,
                        SortForces forces = SortForces::Move);
-    // The next sort (only) takes the last n particles of the arrays as coming before all the others in
-    // the stable order of a cell: a decomposed run appends the particles that came from lower ranks,
-    // which one process would hold first (parallel/SlabDomain.hpp), instead of moving every other.
-    void setLeadingTail(std::size_t n) { leadingTail_ = static_cast<std::uint32_t>(n); }
+    // For the next sort only (a decomposed run's, parallel/SlabDomain.hpp). setVisitOrder: the ranges of
+    // particle indices [first, second), together covering the arrays, in the order the stable sort
+    // takes them (one process's order of particles stored in another). setDiscarded: particles the
+    // sort moves past the last cell (those that left for another rank); sortedCount() then says how
+    // many remain in cells, and the caller shortens the arrays to it.
+    void setVisitOrder(std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges) { visit_ = std::move(ranges); }
+    void setDiscarded(std::vector<std::uint32_t> indices) { discarded_ = std::move(indices); }
+    std::size_t sortedCount() const { return start_[2 * static_cast<std::size_t>(numCells())]; }
     // The last sort's permutation: particle k of the sorted arrays was particle order()[k] before it.
     const ParticleArray<std::uint32_t>& order() const { return order_; }
 
@@ -89,7 +93,9 @@ private:
     std::vector<std::uint32_t> start_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     std::vector<std::uint8_t> homePlanes_;  // empty: every plane
-    std::uint32_t leadingTail_ = 0;         // for the next sort only (setLeadingTail)
+    // For the next sort only: empty, every particle in array order, none discarded.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> visit_;
+    std::vector<std::uint32_t> discarded_;
     // Kept between sorts, so a step allocates nothing.
     ParticleArray<std::uint32_t> keyOf_, order_, fill_;
     std::array<ParticleArray<double>, 3> scratch_;

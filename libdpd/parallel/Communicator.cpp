@@ -42,19 +42,27 @@ bool builtWithMpi() {
 void Communicator::exchange(const std::vector<std::vector<char>>& send, std::vector<char>& received,
                             std::vector<std::size_t>& counts) const {
     if (static_cast<int>(send.size()) != size_) throw std::logic_error("Communicator::exchange: one buffer per rank");
+    std::vector<char> bytes;
+    std::vector<std::size_t> sendCounts;
+    for (const auto& b : send) {
+        bytes.insert(bytes.end(), b.begin(), b.end());
+        sendCounts.push_back(b.size());
+    }
+    exchange(bytes, sendCounts, received, counts);
+}
+
+void Communicator::exchange(const std::vector<char>& sendBytes, const std::vector<std::size_t>& sendSizes,
+                            std::vector<char>& received, std::vector<std::size_t>& counts) const {
+    if (static_cast<int>(sendSizes.size()) != size_) throw std::logic_error("Communicator::exchange: one count per rank");
     counts.assign(size_, 0);
     if (size_ == 1) {
-        received = send[0];
+        received = sendBytes;
         counts[0] = received.size();
         return;
     }
 #ifdef DPD_HAVE_MPI
     std::vector<int> sendCounts(size_), recvCounts(size_);
-    std::vector<char> sendBytes;
-    for (int r = 0; r < size_; ++r) {
-        sendCounts[r] = byteCount(send[r].size());
-        sendBytes.insert(sendBytes.end(), send[r].begin(), send[r].end());
-    }
+    for (int r = 0; r < size_; ++r) sendCounts[r] = byteCount(sendSizes[r]);
     MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, MPI_COMM_WORLD);
     const std::vector<int> sendAt = displacements(sendCounts), recvAt = displacements(recvCounts);
     std::size_t total = 0;

@@ -22,6 +22,10 @@ public:
     // order; counts[r] says how many bytes came from rank r. send.size() must be size().
     void exchange(const std::vector<std::vector<char>>& send, std::vector<char>& received,
                   std::vector<std::size_t>& counts) const;
+    // The same with what goes to every rank in one buffer, rank 0's bytes first: sendCounts[r] bytes
+    // for rank r.
+    void exchange(const std::vector<char>& send, const std::vector<std::size_t>& sendCounts, std::vector<char>& received,
+                  std::vector<std::size_t>& counts) const;
     // Every rank's bytes, concatenated in rank order, on the root only (elsewhere `all` is left empty);
     // counts[r] the bytes of rank r (on the root).
     void gather(const std::vector<char>& mine, std::vector<char>& all, std::vector<std::size_t>& counts) const;

@@ -4,16 +4,20 @@
 
 namespace dpd {
 
-void appendRecord(const Particles& p, std::size_t i, std::vector<char>& bytes) {
+void writeRecord(const Particles& p, std::size_t i, char* to) {
     ParticleRecord rec{};  // padding zeroed: the bytes sent are all defined
     rec.r[0] = p.rx[i]; rec.r[1] = p.ry[i]; rec.r[2] = p.rz[i];
     rec.v[0] = p.vx[i]; rec.v[1] = p.vy[i]; rec.v[2] = p.vz[i];
     rec.f[0] = p.fx[i]; rec.f[1] = p.fy[i]; rec.f[2] = p.fz[i];
     rec.id = p.id[i];
     rec.species = p.species[i];
+    std::memcpy(to, &rec, sizeof rec);
+}
+
+void appendRecord(const Particles& p, std::size_t i, std::vector<char>& bytes) {
     const std::size_t at = bytes.size();
-    bytes.resize(at + sizeof rec);
-    std::memcpy(bytes.data() + at, &rec, sizeof rec);
+    bytes.resize(at + sizeof(ParticleRecord));
+    writeRecord(p, i, bytes.data() + at);
 }
 
 void appendRecords(const char* from, std::size_t count, Particles& p) {

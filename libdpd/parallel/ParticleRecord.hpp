@@ -16,6 +16,8 @@ struct ParticleRecord {
 
 // Appends particle i of p to the bytes.
 void appendRecord(const Particles& p, std::size_t i, std::vector<char>& bytes);
+// Writes particle i of p at `to` (sizeof(ParticleRecord) bytes).
+void writeRecord(const Particles& p, std::size_t i, char* to);
 // Appends `count` records read from `from` to p's arrays.
 void appendRecords(const char* from, std::size_t count, Particles& p);
 

@@ -42,16 +42,24 @@ public:
 
     // Keeps only this rank's particles, in their order (at the start, where every rank read all).
     void keepOwned(Particles& p, const CellList& cells) const;
+    // Index ranges of the particle arrays, in the order one process would hold the particles.
+    using Ranges = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
     // Sends the particles that moved out of this rank's planes (with their deferred wall crossings)
-    // to their owners and takes in those that came; no ghosts may be held. Those from higher ranks
-    // are appended to p; those from lower ranks, which one process holds before this rank's own, go
-    // to fromLower (appended last, after the ghosts, they lead the next sort: CellList::setLeadingTail).
-    void migrate(Particles& p, const CellList& cells, std::vector<DeferredCrossing>& deferred, Particles& fromLower) const;
+    // to their owners, in the order `own` gives, and takes in those that came; no ghosts may be held.
+    // The leavers stay in p, their indices in `leavers` (the sort discards them: CellList::setDiscarded).
+    // Those from higher ranks are appended to p; those from lower ranks, which one process holds
+    // before this rank's own, go to fromLower (appended after the ghosts, they lead the sort's order).
+    void migrate(Particles& p, const Ranges& own, const CellList& cells, std::vector<DeferredCrossing>& deferred,
+                 Particles& fromLower, std::vector<std::uint32_t>& leavers) const;
     // Appends to p copies of the neighbours' particles in the planes next to this rank's; this rank's
-    // particles are `fromLower` (migrate's) and then p, in one process's order.
-    void addGhosts(const Particles& fromLower, Particles& p, const CellList& cells) const;
-    // After a sort that held ghosts: keeps the owned particles, [cellStart(first plane), cellStart(end plane)).
-    void dropGhosts(Particles& p, const CellList& cells) const;
+    // particles are `fromLower` and then p's ranges `own`, in one process's order.
+    void addGhosts(const Particles& fromLower, Particles& p, const Ranges& own, const CellList& cells) const;
+    // After a sort that held ghosts, [ghosts below][own][ghosts above]: keeps the own particles and
+    // returns r such that one process's order of them is [r, size) then [0, r). The own particles
+    // that fit go into the lower ghosts' places (as many as there were ghosts below) rather than the
+    // whole slab moving down; r = 0 when nothing was moved.
+    std::size_t dropGhosts(Particles& p, const CellList& cells) const;
     // Every rank's particles on the root, in rank order: the single rank's order (elsewhere: empty).
     Particles gather(const Particles& p) const;
 
@@ -61,6 +69,10 @@ private:
 
     const Communicator* comm_;
     SlabDecomposition slabs_;
+    // migrate's planes of the particles it kept, by index, for addGhosts (one pass over the slab).
+    mutable std::vector<std::int32_t> planes_;
+    // Kept between steps, so that a step allocates (and the kernel clears) no new pages for them.
+    mutable std::vector<char> sendBuffer_, receiveBuffer_;
 };
 
 }  // namespace dpd

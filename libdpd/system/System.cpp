@@ -110,24 +110,46 @@ void System::sortByCell(SortForces forces) {
     if (domain_) {
         // The particles that left for other ranks go, those that came in join, the neighbours' planes
         // come as ghosts; then all of them are sorted together.
-        dropGhosts();
-        Particles fromLower;
-        {
-            const ScopedTimer timer(stepTimes ? &stepTimes->migrate : nullptr);
-            domain_->migrate(particles, cells_, deferredCrossings_, fromLower);
-        }
-        const ScopedTimer timer(stepTimes ? &stepTimes->ghosts : nullptr);
-        domain_->addGhosts(fromLower, particles, cells_);
-        // Those from lower ranks last in the arrays, first in the sort's order (one process's order).
-        particles.append(fromLower);
-        cells_.setLeadingTail(fromLower.size());
-        ghostsHeld_ = true;
+        exchangeWithNeighbours();
     }
     const ScopedTimer timer(stepTimes ? &stepTimes->sort : nullptr);
     cells_.sortParticles(particles, frozenOfSpecies_, forces);
+    // The particles that left are past the last cell: gone. Forces left behind keep their length
+    // until the pair loop has read them.
+    if (domain_) particles.shorten(cells_.sortedCount(), forces == SortForces::Leave);
     if (!bonds.empty()) bonds.locate(particles);
     forcesLeftBySort_ = forces == SortForces::Leave;
 }
+
+void System::exchangeWithNeighbours() {
+    dropGhosts();
+    const auto n = static_cast<std::uint32_t>(particles.size());
+    // One process's order of this rank's particles as stored (dropGhosts may have rotated them).
+    const auto r = static_cast<std::uint32_t>(rotation_);
+    SlabDomain::Ranges own = r > 0 ? SlabDomain::Ranges{{r, n}, {0, r}} : SlabDomain::Ranges{{0, n}};
+    Particles fromLower;
+    std::vector<std::uint32_t> leavers;
+    {
+        const ScopedTimer timer(stepTimes ? &stepTimes->migrate : nullptr);
+        domain_->migrate(particles, own, cells_, deferredCrossings_, fromLower, leavers);
+    }
+    const ScopedTimer timer(stepTimes ? &stepTimes->ghosts : nullptr);
+    const auto withHigher = static_cast<std::uint32_t>(particles.size());
+    own.emplace_back(n, withHigher);  // those from higher ranks follow this rank's own
+    domain_->addGhosts(fromLower, particles, own, cells_);
+    const auto withGhosts = static_cast<std::uint32_t>(particles.size());
+    particles.append(fromLower);
+    // The sort's order: from lower ranks, own, from higher ranks, then ghosts (planes of their own).
+    SlabDomain::Ranges visit{{withGhosts, static_cast<std::uint32_t>(particles.size())}};
+    visit.insert(visit.end(), own.begin(), own.end());
+    visit.emplace_back(withHigher, withGhosts);
+    cells_.setVisitOrder(std::move(visit));
+    cells_.setDiscarded(std::move(leavers));
+    rotation_ = 0;
+    ghostsHeld_ = true;
+}
+
+Particles System::orderedParticles() const { return rotation_ == 0 ? particles : particles.rotated(rotation_); }
 
 void System::computeForces() { computeForces(0.0); }
 
@@ -179,7 +201,7 @@ void System::completeWalls() {
 void System::dropGhosts() {
     if (!ghostsHeld_) return;
     if (forcesLeftBySort_) throw std::logic_error("System::dropGhosts: the forces the last sort left behind were never computed");
-    domain_->dropGhosts(particles, cells_);
+    rotation_ = domain_->dropGhosts(particles, cells_);
     ghostsHeld_ = false;
 }
 

@@ -108,8 +108,12 @@ public:
     // first lets go of the ghosts the last sort took in (dropGhosts).
     void completeWalls();
     // In a decomposed run, drops the neighbours' particles that the last sortByCell added for the pair
-    // forces, so that the particles are this rank's own again (nothing on one rank).
+    // forces, so that the particles are this rank's own again (nothing on one rank). The particles
+    // may then be stored out of one process's order (rotated: what does not depend on their order
+    // reads `particles`; what does, a snapshot, reads orderedParticles()).
     void dropGhosts();
+    // The particles in the order one process would hold them (a copy).
+    Particles orderedParticles() const;
     // Moves the clock on by one step.
     void advanceClock() { ++step; time += forceParameters.dt; }
 
@@ -119,11 +123,14 @@ public:
 private:
     WallStep wallStep();  // what the walls act on at this step
     void decompose();     // this rank's slab of the box (initialise, with several ranks)
+    // Migration and ghosts before a decomposed run's sort, and the sort's order for them.
+    void exchangeWithNeighbours();
 
     using PairKernel = void (*)(Particles&, const PairLoopContext&, const PairForceParameters&);
     CellList cells_;
     std::shared_ptr<const SlabDomain> domain_;
     bool ghostsHeld_ = false;  // the particles hold the neighbours' ghosts (from sortByCell to dropGhosts)
+    std::size_t rotation_ = 0;  // one process's order of the particles is [rotation_, n) then [0, rotation_)
     PairRandom random_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     PairKernel pairKernel_ = nullptr;

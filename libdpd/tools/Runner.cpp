@@ -75,7 +75,7 @@ std::string clockText(double seconds) {
 Snapshot snapshotOf(const System& sys) {
     Snapshot s;
     s.box = sys.box;
-    s.particles = sys.particles;
+    s.particles = sys.orderedParticles();
     s.speciesNames = sys.species.names();
     for (int k = 0; k < sys.species.size(); ++k) s.speciesFrozen.push_back(sys.species[k].frozen);
     s.time = sys.time;
