@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 namespace dpd {
 
@@ -87,18 +88,17 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
     std::vector<MigrationHeader> headers(ranks);
     std::vector<std::uint8_t> deferredLeaves(deferred.size(), 0);
     leavers.clear();
-    // Every particle's plane in one flat pass (the order is the arrays'), then the leavers in
-    // one process's order.
-    const long n = static_cast<long>(p.size());
-    planes_.resize(p.size());
-    const double* rx = p.rx.data();
-    std::int32_t* planes = planes_.data();
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) planes[i] = planeOf(cells, rx[i]);
+    firstPlaneOwn_.clear();
+    lastPlaneOwn_.clear();
+    // One pass in one process's order: leavers, and those in the planes the neighbours need as ghosts.
     for (const auto& [first, end] : own)
         for (std::uint32_t i = first; i < end; ++i) {
-            const int plane = planes[i];
-            if (plane >= lo && plane < hi) continue;
+            const int plane = planeOf(cells, p.rx[i]);
+            if (plane >= lo && plane < hi) {
+                if (plane == lo) firstPlaneOwn_.push_back(i);
+                if (plane == hi - 1) lastPlaneOwn_.push_back(i);
+                continue;
+            }
             const int to = slabs_.ownerOf(plane);
             leavers.push_back(i);
             appendRecord(p, i, records[to]);
@@ -149,39 +149,37 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
 
 void SlabDomain::addGhosts(const Particles& fromLower, Particles& p, const Ranges& own, const CellList& cells) const {
     const int ranks = comm_->size(), n = slabs_.planes();
+    if (own.empty()) throw std::logic_error("SlabDomain::addGhosts: no own ranges");
     const int lo = firstPlane(), hi = endPlane();
     const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
-    // The planes of those that came in; the slab's own as migrate found them.
-    std::vector<std::int32_t> lowerPlanes(fromLower.size());
-    for (std::size_t i = 0; i < fromLower.size(); ++i) lowerPlanes[i] = planeOf(cells, fromLower.rx[i]);
-    const std::size_t known = planes_.size();
-    planes_.resize(p.size());
-    for (std::size_t i = known; i < p.size(); ++i) planes_[i] = planeOf(cells, p.rx[i]);
-    // Two passes, counting then writing each record in its place: one buffer, no copies. Each
-    // destination's records in one process's order.
-    std::vector<std::size_t> count(ranks, 0);
-    const auto visit = [&](auto&& offer) {
-        for (std::uint32_t i = 0; i < fromLower.size(); ++i) offer(fromLower, i, lowerPlanes[i]);
-        for (const auto& [first, end] : own)
-            for (std::uint32_t i = first; i < end; ++i) offer(p, i, planes_[i]);
+    // Per plane, one process's order: those from lower ranks, the slab's own (as migrate found them),
+    // those from higher ranks (appended to p after `own`'s first ranges, which migrate scanned).
+    std::vector<std::pair<const Particles*, std::uint32_t>> firstPlane, lastPlane;
+    const auto sortIn = [&](const Particles& q, std::uint32_t i) {
+        const int plane = planeOf(cells, q.rx[i]);
+        if (plane == lo) firstPlane.emplace_back(&q, i);
+        if (plane == hi - 1) lastPlane.emplace_back(&q, i);
     };
-    visit([&](const Particles&, std::uint32_t, int plane) {
-        count[below] += plane == lo;
-        count[above] += plane == hi - 1;
-    });
-    std::vector<std::size_t> at(ranks, 0), sendBytes(ranks);
-    std::size_t total = 0;
-    for (int r = 0; r < ranks; ++r) {
-        at[r] = total;
-        sendBytes[r] = count[r] * sizeof(ParticleRecord);
-        total += sendBytes[r];
-    }
+    for (std::uint32_t i = 0; i < fromLower.size(); ++i) sortIn(fromLower, i);
+    for (const std::uint32_t i : firstPlaneOwn_) firstPlane.emplace_back(&p, i);
+    for (const std::uint32_t i : lastPlaneOwn_) lastPlane.emplace_back(&p, i);
+    const auto fromHigher = own.back();  // migrate appended them: the last range
+    for (std::uint32_t i = fromHigher.first; i < fromHigher.second; ++i) sortIn(p, i);
+    std::vector<std::size_t> sendBytes(ranks, 0);
+    sendBytes[below] += firstPlane.size() * sizeof(ParticleRecord);
+    sendBytes[above] += lastPlane.size() * sizeof(ParticleRecord);
     std::vector<char>& send = sendBuffer_;
-    send.resize(total);
-    visit([&](const Particles& q, std::uint32_t i, int plane) {
-        if (plane == lo) { writeRecord(q, i, send.data() + at[below]); at[below] += sizeof(ParticleRecord); }
-        if (plane == hi - 1) { writeRecord(q, i, send.data() + at[above]); at[above] += sizeof(ParticleRecord); }
-    });
+    send.resize((firstPlane.size() + lastPlane.size()) * sizeof(ParticleRecord));
+    // Rank order in the buffer; with two ranks below and above are one rank: the first plane first.
+    char* to = send.data();
+    const auto write = [&](const std::vector<std::pair<const Particles*, std::uint32_t>>& list) {
+        for (const auto& [q, i] : list) {
+            writeRecord(*q, i, to);
+            to += sizeof(ParticleRecord);
+        }
+    };
+    if (below <= above) { write(firstPlane); write(lastPlane); }
+    else { write(lastPlane); write(firstPlane); }
     std::vector<std::size_t> counts;
     comm_->exchange(send, sendBytes, receiveBuffer_, counts);
     appendRecords(receiveBuffer_.data(), receiveBuffer_.size() / sizeof(ParticleRecord), p);

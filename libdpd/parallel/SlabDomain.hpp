@@ -53,7 +53,8 @@ public:
     void migrate(Particles& p, const Ranges& own, const CellList& cells, std::vector<DeferredCrossing>& deferred,
                  Particles& fromLower, std::vector<std::uint32_t>& leavers) const;
     // Appends to p copies of the neighbours' particles in the planes next to this rank's; this rank's
-    // particles are `fromLower` and then p's ranges `own`, in one process's order.
+    // particles are `fromLower` and then p's ranges `own`, in one process's order: the ranges migrate
+    // scanned, then the last, those migrate appended from higher ranks.
     void addGhosts(const Particles& fromLower, Particles& p, const Ranges& own, const CellList& cells) const;
     // After a sort that held ghosts, [ghosts below][own][ghosts above]: keeps the own particles and
     // returns r such that one process's order of them is [r, size) then [0, r). The own particles
@@ -69,8 +70,9 @@ private:
 
     const Communicator* comm_;
     SlabDecomposition slabs_;
-    // migrate's planes of the particles it kept, by index, for addGhosts (one pass over the slab).
-    mutable std::vector<std::int32_t> planes_;
+    // What migrate found of the particles it kept, for addGhosts: those in the slab's first and last
+    // planes (in one process's order).
+    mutable std::vector<std::uint32_t> firstPlaneOwn_, lastPlaneOwn_;
     // Kept between steps, so that a step allocates (and the kernel clears) no new pages for them.
     mutable std::vector<char> sendBuffer_, receiveBuffer_;
 };
