@@ -5,15 +5,15 @@
 # with a binned profile sampled every step; tunable-slip walls (forces with random numbers, specular);
 # a Couette channel whose frozen walls move along x (frozen particles cross the slabs' faces) with
 # bounce-forward (crossings completed at the end of the step, after the particle may have changed
-# rank); uneven slabs from system/decomposeParDict; a run written on 3 ranks and continued on 2.
+# rank); a random wall from an image mask (geometry wall, bounce layer); uneven slabs from system/decomposeParDict; a run written on 3 ranks and continued on 2.
 # Particles cross the slabs' faces thousands of times in each run (the flow is along x), so a rank
 # that put a particle in another order than one process would, or lost a force contribution, changes
 # the trajectories within a few hundred steps. The profile's counts must agree exactly, its sums to
 # rounding. Bad decompositions are refused with the file and keyword named.
 #   $1: the directory of the executables, $2: the source directory
 set -u
-bin=$1
-src=$2
+bin=$(cd "$1" && pwd)
+src=$(cd "$2" && pwd)
 work=$(mktemp -d)
 trap '[ -z "${KEEP:-}" ] && rm -rf "$work"' EXIT
 . "$src/tests/shellTestFunctions" || exit 1
@@ -136,6 +136,42 @@ grep -q "velocity (2 0 0); reflection bounceForward" "$co/constant/dpdProperties
 controlDict "$co" 8 ""
 "$bin/blockFrozenWall" -case "$co" > "$co/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall (Couette): $(cat "$co/log.blockFrozenWall")"
 compareRuns couette "$co" 8
+
+# 3b. A wall of any shape: the poiseuille tutorial's random wall from an image mask (bounce layer on
+#     the geometry's surface, frozen particles from randomEquilWall), 10 planes, on 2 and 3 ranks.
+geo=$work/geometry
+mkdir -p "$geo"
+cp -r "$src/tutorials/channel/poiseuille/system" "$src/tutorials/channel/poiseuille/randomWalls" \
+      "$src/tutorials/channel/poiseuille/randomMask" "$geo/"
+(
+    cd "$geo" || exit 1
+    set_() { "$bin/dpdDictionary" "$1" -entry "$2" -set "$3" > /dev/null || echo "FAIL: dpdDictionary $1 $2"; }
+    set_ system/controlDict endTime 10
+    set_ system/controlDict writeInterval 500
+    set_ system/controlDict functions/channelProfile/min -5
+    set_ system/controlDict functions/channelProfile/max 5
+    set_ system/controlDict functions/channelProfile/startTime 2
+    set_ randomWalls/dpdProperties bodyForce/value "(0.08 0 0)"
+    set_ randomWalls/randomEquilWallDict box/min "(-5 -1.5 -7)"
+    set_ randomWalls/randomEquilWallDict box/max "(5 1.5 7)"
+    set_ randomWalls/randomEquilWallDict fluid/initialFlow/wallPositions "(-5 5)"
+    set_ randomMask/constant/dpdProperties geometry/file '"constant/geometry/channelSmall.png"'
+    cd randomMask && "$bin/randomEquilWall" > log.randomEquilWall 2>&1 || echo "FAIL: randomEquilWall: $(tail -3 log.randomEquilWall)"
+) | grep FAIL && fail "the geometry case was not made"
+for ranks in 0 2 3; do
+    c=$geo/run$ranks
+    mkdir -p "$c"
+    cp -r "$geo/randomMask/0" "$geo/randomMask/constant" "$geo/randomMask/system" "$c/"
+    sed -i "s|#include \"../../system/controlDict\"|#include \"$geo/system/controlDict\"|" "$c/system/controlDict"
+    run "$c" "$ranks" 2 || fail "geometry wall on $ranks ranks: $(tail -5 "$c/log")"
+done
+grep -q "geometry: reflection bounceLayer" "$geo/run3/log" || fail "the geometry case has no geometry wall"
+for ranks in 2 3; do
+    sameSnapshot "$geo/run0/10/particles.h5" "$geo/run$ranks/10/particles.h5" || fail "geometry wall: $ranks ranks differ from one process"
+    sameSampling "$geo/run0/10/sampling/channelProfile.h5" "$geo/run$ranks/10/sampling/channelProfile.h5" ||
+        fail "geometry wall: the sampling on $ranks ranks differs"
+done
+echo "    geometry wall: 2 and 3 ranks x 2 threads as one process"
 
 # 4. Uneven slabs from system/decomposeParDict: 2, 3 and 7 planes.
 un=$work/uneven

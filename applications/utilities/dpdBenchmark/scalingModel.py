@@ -53,8 +53,8 @@ def efficiency(step, N, P, a):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--tp", type=float, default=1 / 1.17e7, help="s per particle-step, 1 rank 1 thread")
-    p.add_argument("--tg", type=float, default=2.2e-7, help="s per ghost particle and step (exchange and sort)")
+    p.add_argument("--tp", type=float, default=9.1e-8, help="s per particle-step and core, every core of the node busy")
+    p.add_argument("--tg", type=float, default=2.9e-7, help="s per ghost particle and step (exchange, sort, pair inputs)")
     p.add_argument("--alpha", type=float, default=2.9e-7, help="one-way latency, s (this machine: 0.29 us)")
     p.add_argument("--beta", type=float, default=1.0e10, help="bandwidth, bytes/s (this machine: 10 GB/s)")
     p.add_argument("--rho", type=float, default=3.0)
