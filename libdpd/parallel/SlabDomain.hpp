@@ -63,6 +63,8 @@ public:
     std::size_t dropGhosts(Particles& p, const CellList& cells) const;
     // Every rank's particles on the root, in rank order: the single rank's order (elsewhere: empty).
     Particles gather(const Particles& p) const;
+    // The same on every rank.
+    Particles gatherToAll(const Particles& p) const;
 
 private:
     // The plane a particle's sort will put it in (the sort wraps the position, so the same wrap here).

@@ -4,6 +4,7 @@
 #include "geometry/GeometryDictionary.hpp"
 #include "geometry/Percolation.hpp"
 #include "integrators/Integrator.hpp"
+#include "parallel/Communicator.hpp"
 #include "io/Dictionary.hpp"
 #include "case/BoxDictionary.hpp"
 #include "case/DpdProperties.hpp"
@@ -73,17 +74,21 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     fluidOnly.bodyForce = noBodyForce();
     fluidOnly.walls = WallList{};
     fluidOnly.geometryWall = GeometryWallSettings{};  // the box is filled through the solid too
-    System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict");
+    // Under mpirun the ranks share the box (docs/parallel.md); every rank then goes on with all of it.
+    System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict", &Communicator::world());
     const auto integrator = makeIntegrator(model.integrator);
+    if (sys.domain() && !integrator->runsOnSeveralRanks())
+        model.integrator.coeffs.fail("type", integrator->name() + " cannot run on several ranks yet (GrootWarren and Euler can)");
     useThreadsForParticles(sys.particles.size());
     sys.sortByCell();
     sys.computeForces();
+    sys.dropGhosts();
     report.equilibrationSteps = static_cast<std::size_t>(std::llround(time / dt));
     for (std::size_t k = 0; k < report.equilibrationSteps; ++k) integrator->step(sys);
     const MonitorReport m = monitor(sys, -1);
     if (!m.finite) ed.fail("deltaT", "the equilibration went unstable (non-finite values): reduce deltaT");
     report.equilibratedKT = m.kT;
-    snap.particles = std::move(sys.particles);
+    snap.particles = sys.domain() ? sys.domain()->gatherToAll(sys.orderedParticles()) : std::move(sys.particles);
 }
 
 // Keeps the fluid (renumbered first) and the solid particles within one cutoff of the fluid. Fluid is

@@ -138,7 +138,8 @@ controlDict "$co" 8 ""
 compareRuns couette "$co" 8
 
 # 3b. A wall of any shape: the poiseuille tutorial's random wall from an image mask (bounce layer on
-#     the geometry's surface, frozen particles from randomEquilWall), 10 planes, on 2 and 3 ranks.
+#     the geometry's surface, frozen particles from randomEquilWall, whose equilibration also runs on
+#     3 ranks), 10 planes, on 2 and 3 ranks.
 geo=$work/geometry
 mkdir -p "$geo"
 cp -r "$src/tutorials/channel/poiseuille/system" "$src/tutorials/channel/poiseuille/randomWalls" \
@@ -158,6 +159,15 @@ cp -r "$src/tutorials/channel/poiseuille/system" "$src/tutorials/channel/poiseui
     set_ randomMask/constant/dpdProperties geometry/file '"constant/geometry/channelSmall.png"'
     cd randomMask && "$bin/randomEquilWall" > log.randomEquilWall 2>&1 || echo "FAIL: randomEquilWall: $(tail -3 log.randomEquilWall)"
 ) | grep FAIL && fail "the geometry case was not made"
+# randomEquilWall's equilibration on 3 ranks writes the same 0/ as on one process.
+cp -r "$geo/randomMask" "$geo/equil3"
+rm -rf "$geo/equil3/0"
+sed -i "s|#include \"../../|#include \"$geo/|" "$geo/equil3/system/controlDict" "$geo/equil3/system/randomEquilWallDict" \
+    "$geo/equil3/constant/dpdProperties"
+OMP_NUM_THREADS=1 "${mpirun[@]}" -np 3 "$bin/randomEquilWall" -case "$geo/equil3" > "$geo/equil3/log" 2>&1 ||
+    fail "randomEquilWall on 3 ranks: $(tail -5 "$geo/equil3/log")"
+grep -q "equilibrated for [1-9][0-9]* steps" "$geo/equil3/log" || fail "randomEquilWall did not equilibrate: $(cat "$geo/equil3/log")"
+sameSnapshot "$geo/randomMask/0/particles.h5" "$geo/equil3/0/particles.h5" || fail "randomEquilWall on 3 ranks differs from one process"
 for ranks in 0 2 3; do
     c=$geo/run$ranks
     mkdir -p "$c"

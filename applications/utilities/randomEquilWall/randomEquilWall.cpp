@@ -1,18 +1,23 @@
 // randomEquilWall: writes 0/ for walls of any shape (docs/walls.md 3.2): the box filled and
 // equilibrated as one fluid, then the particles inside the solid of the geometry block of
 // constant/dpdProperties frozen within one cutoff of the fluid and dropped deeper in
-// (system/randomEquilWallDict).
+// (system/randomEquilWallDict). Under mpirun the equilibration runs on every rank together
+// (docs/parallel.md); the first rank writes.
 #include "app/ToolCommandLine.hpp"
 #include "core/Axis.hpp"
 #include "setup/RandomEquilWall.hpp"
 #include "io/Dictionary.hpp"
 #include "case/DpdProperties.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/MpiSession.hpp"
 
 #include <filesystem>
 #include <iostream>
 
 int main(int argc, char** argv) {
-    return dpd::runTool("randomEquilWall", [&] {
+    const dpd::MpiSession mpi(argc, argv);
+    const dpd::Communicator& world = dpd::Communicator::world();
+    const int status = dpd::runTool("randomEquilWall", [&] {
         dpd::ToolCommandLine cl("randomEquilWall", "build the initial particles of walls of any shape (image mask or gmsh)", false);
         if (!cl.parse(argc, argv)) return;
         const std::filesystem::path caseDir(cl.caseDir());
@@ -21,6 +26,7 @@ int main(int argc, char** argv) {
         const auto dict = dpd::Dictionary::readFile((caseDir / "system" / "randomEquilWallDict").string());
         dpd::RandomEquilWallReport r;
         const dpd::Snapshot snap = dpd::buildRandomEquilWall(dict, properties, model, cl.caseDir(), r);
+        if (!world.isRoot()) return;
         dpd::writeSnapshot((caseDir / "0").string(), snap);
         std::cout << "Background grid  : " << r.gridCells[0] << " x " << r.gridCells[1] << " x " << r.gridCells[2]
                   << " cells, porosity " << r.gridPorosity << "\n"
@@ -34,4 +40,6 @@ int main(int argc, char** argv) {
                   << "Dropped          : " << r.dropped << "\n"
                   << "Written " << (caseDir / "0" / "particles.h5").string() << "\nEnd\n";
     });
+    if (status != 0 && world.parallel()) world.abort(status);
+    return status;
 }
