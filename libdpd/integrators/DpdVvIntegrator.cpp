@@ -15,10 +15,12 @@ std::unique_ptr<Integrator> DpdVvIntegrator::New(const Dictionary& coeffs) {
 WallCounters DpdVvIntegrator::step(System& sys) {
     Particles& p = sys.particles;
     const double halfDt = 0.5 * sys.dt();
-    const long n = static_cast<long>(p.size());
     halfKickAndDrift(sys);
     const WallCounters walls = endMove(sys, SortForces::Leave);  // the forces are computed anew
     sys.computeForces();
+    // The dissipative loop below reads the ghosts' velocity changes, made from their whole forces.
+    sys.refreshGhostForces();
+    const long n = static_cast<long>(p.size());  // a decomposed run's count changes in the sort
     // Second half kick; keep v(t+dt) and f' aside, and put the velocity change dt f' / 2 in the
     // particles' velocities (zero for frozen particles, whose velocity never changes) so that one
     // dissipative pair loop gives f^D(v(t+dt) - v').

@@ -20,6 +20,7 @@ public:
     // No coefficients.
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "DPDVV"; }
+    bool runsOnSeveralRanks() const override { return true; }
     WallCounters step(System& sys) override;
 
 private:

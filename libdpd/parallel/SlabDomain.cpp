@@ -185,6 +185,57 @@ void SlabDomain::addGhosts(const Particles& fromLower, Particles& p, const Range
     appendRecords(receiveBuffer_.data(), receiveBuffer_.size() / sizeof(ParticleRecord), p);
 }
 
+namespace {
+
+// Particles [first, end) of the sorted arrays that lie in plane `plane` (its cells are one range).
+std::pair<std::size_t, std::size_t> planeRange(const CellList& cells, int plane) {
+    const int nx = cells.cellsPerAxis()[0];
+    const std::size_t first = cells.cellStart(cells.cellIndex(plane, 0, 0));
+    const std::size_t end = plane + 1 == nx ? cells.sortedCount() : cells.cellStart(cells.cellIndex(plane + 1, 0, 0));
+    return {first, end};
+}
+
+}  // namespace
+
+void SlabDomain::refreshGhostForces(Particles& p, const CellList& cells) const {
+    const int ranks = comm_->size(), n = slabs_.planes();
+    const int lo = firstPlane(), hi = endPlane();
+    const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
+    const auto first = planeRange(cells, lo), last = planeRange(cells, hi - 1);
+    const auto lowerGhosts = planeRange(cells, (lo - 1 + n) % n), upperGhosts = planeRange(cells, hi % n);
+    std::vector<char> send;
+    const auto put = [&](std::pair<std::size_t, std::size_t> r) {
+        for (std::size_t i = r.first; i < r.second; ++i) {
+            const double f[3] = {p.fx[i], p.fy[i], p.fz[i]};
+            const char* b = reinterpret_cast<const char*>(f);
+            send.insert(send.end(), b, b + sizeof f);
+        }
+    };
+    std::vector<std::size_t> sendBytes(ranks, 0);
+    const std::size_t perParticle = 3 * sizeof(double);
+    sendBytes[below] += (first.second - first.first) * perParticle;
+    sendBytes[above] += (last.second - last.first) * perParticle;
+    // In rank order; with one neighbour on both sides, the first plane first.
+    if (below <= above) { put(first); put(last); }
+    else { put(last); put(first); }
+    std::vector<char> received;
+    std::vector<std::size_t> counts;
+    comm_->exchange(send, sendBytes, received, counts);
+    // From `above` its first plane (our upper ghosts), from `below` its last (our lower ghosts).
+    const char* at = received.data();
+    const auto take = [&](std::pair<std::size_t, std::size_t> r) {
+        for (std::size_t i = r.first; i < r.second; ++i, at += perParticle) {
+            double f[3];
+            std::memcpy(f, at, sizeof f);
+            p.fx[i] = f[0]; p.fy[i] = f[1]; p.fz[i] = f[2];
+        }
+    };
+    if (below < above) { take(lowerGhosts); take(upperGhosts); }
+    else { take(upperGhosts); take(lowerGhosts); }
+    if (at != received.data() + received.size())
+        throw std::logic_error("SlabDomain::refreshGhostForces: the neighbours' planes and the ghosts differ in number");
+}
+
 std::size_t SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
     const int hi = endPlane();
     const std::size_t begin = cells.cellStart(cells.cellIndex(firstPlane(), 0, 0));

@@ -56,6 +56,10 @@ public:
     // particles are `fromLower` and then p's ranges `own`, in one process's order: the ranges migrate
     // scanned, then the last, those migrate appended from higher ranks.
     void addGhosts(const Particles& fromLower, Particles& p, const Ranges& own, const CellList& cells) const;
+    // After the pair forces, the ghosts' forces made whole: each rank sends the forces of its first
+    // and last planes, which its neighbours hold as ghosts in the same order (the sort's), for a
+    // second pair loop in the step that reads the ghosts' forces (velocity Verlet's).
+    void refreshGhostForces(Particles& p, const CellList& cells) const;
     // After a sort that held ghosts, [ghosts below][own][ghosts above]: keeps the own particles and
     // returns r such that one process's order of them is [r, size) then [0, r). The own particles
     // that fit go into the lower ghosts' places (as many as there were ghosts below) rather than the

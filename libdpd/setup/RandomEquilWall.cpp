@@ -78,7 +78,7 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict", &Communicator::world());
     const auto integrator = makeIntegrator(model.integrator);
     if (sys.domain() && !integrator->runsOnSeveralRanks())
-        model.integrator.coeffs.fail("type", integrator->name() + " cannot run on several ranks yet (GrootWarren and Euler can)");
+        model.integrator.coeffs.fail("type", integrator->name() + " cannot run on several ranks yet (GrootWarren, DPDVV and Euler can)");
     useThreadsForParticles(sys.particles.size());
     sys.sortByCell();
     sys.computeForces();

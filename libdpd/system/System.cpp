@@ -198,6 +198,10 @@ void System::completeWalls() {
     walls.completeStep(particles, frozenOfSpecies_, box, deferredCrossings_);
 }
 
+void System::refreshGhostForces() {
+    if (domain_ && ghostsHeld_) domain_->refreshGhostForces(particles, cells_);
+}
+
 void System::dropGhosts() {
     if (!ghostsHeld_) return;
     if (forcesLeftBySort_) throw std::logic_error("System::dropGhosts: the forces the last sort left behind were never computed");

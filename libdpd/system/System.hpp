@@ -107,6 +107,9 @@ public:
     // Every integrator calls it once the velocities of the step are complete. In a decomposed run it
     // first lets go of the ghosts the last sort took in (dropGhosts).
     void completeWalls();
+    // In a decomposed run, the ghosts' forces made those their owners computed (nothing on one rank):
+    // for a second pair loop in a step that reads them.
+    void refreshGhostForces();
     // In a decomposed run, drops the neighbours' particles that the last sortByCell added for the pair
     // forces, so that the particles are this rank's own again (nothing on one rank). The particles
     // may then be stored out of one process's order (rotated: what does not depend on their order

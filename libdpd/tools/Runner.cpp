@@ -181,7 +181,7 @@ private:
     static void requireDecomposable(const Integrator& integrator, const FunctionObjects& functions, const DpdModel& model,
                                     const RunControl& control) {
         if (!integrator.runsOnSeveralRanks())
-            model.integrator.coeffs.fail("type", integrator.name() + " cannot run on several ranks yet (GrootWarren and Euler can)");
+            model.integrator.coeffs.fail("type", integrator.name() + " cannot run on several ranks yet (GrootWarren, DPDVV and Euler can)");
         const std::string single = functions.firstSingleRank();
         if (!single.empty()) control.functions.fail(single, "this function object cannot run on several ranks yet");
     }

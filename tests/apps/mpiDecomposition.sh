@@ -2,7 +2,7 @@
 # Domain decomposition (docs/parallel.md): the same case run by dpdFoamLike on one process and under
 # `mpirun -np N` for N = 1, 2, 3, 4, each with 1 and 2 threads, must write snapshots identical to the
 # bit (every dataset of particles.h5). Scenes: a channel between frozen lattice walls (bounce-back)
-# with a binned profile sampled every step; tunable-slip walls (forces with random numbers, specular);
+# with a binned profile sampled every step; the same with velocity Verlet; tunable-slip walls (forces with random numbers, specular);
 # a Couette channel whose frozen walls move along x (frozen particles cross the slabs' faces) with
 # bounce-forward (crossings completed at the end of the step, after the particle may have changed
 # rank); a random wall from an image mask (geometry wall, bounce layer); uneven slabs from system/decomposeParDict; a run written on 3 ranks and continued on 2.
@@ -136,6 +136,14 @@ grep -q "velocity (2 0 0); reflection bounceForward" "$co/constant/dpdProperties
 controlDict "$co" 8 ""
 "$bin/blockFrozenWall" -case "$co" > "$co/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall (Couette): $(cat "$co/log.blockFrozenWall")"
 compareRuns couette "$co" 8
+
+# 3a. Velocity Verlet (DPD-VV): a second pair loop in the step, which reads the ghosts' forces.
+vv=$work/dpdvv
+cp -r "$ch" "$vv"
+sed -i -e 's/type GrootWarren; lambda 0.65;/type DPDVV;/' "$vv/constant/dpdProperties"
+grep -q "type DPDVV;" "$vv/constant/dpdProperties" || fail "the DPD-VV case was not made"
+controlDict "$vv" 6 ""
+compareRuns dpdvv "$vv" 6
 
 # 3b. A wall of any shape: the poiseuille tutorial's random wall from an image mask (bounce layer on
 #     the geometry's surface, frozen particles from randomEquilWall, whose equilibration also runs on
