@@ -79,6 +79,7 @@ private:
     // What migrate found of the particles it kept, for addGhosts: those in the slab's first and last
     // planes (in one process's order).
     mutable std::vector<std::uint32_t> firstPlaneOwn_, lastPlaneOwn_;
+    mutable std::vector<std::int32_t> planes_;  // migrate's scratch: each particle's plane
     // Kept between steps, so that a step allocates (and the kernel clears) no new pages for them.
     mutable std::vector<char> sendBuffer_, receiveBuffer_;
 };

@@ -22,6 +22,9 @@ py=/usr/bin/python3
 mpirun=(mpirun --oversubscribe)
 [ "$(id -u)" -eq 0 ] && mpirun+=(--allow-run-as-root)
 export OMPI_MCA_rmaps_base_oversubscribe=1
+# Shared-memory messages copied through the shared segment, not read across processes (containers
+# often forbid the cross-process read, which OpenMPI would otherwise try for large messages).
+export OMPI_MCA_btl_vader_single_copy_mechanism=none
 
 command -v mpirun > /dev/null || { echo "mpirun not found (Debian package openmpi-bin)"; exit 1; }
 
