@@ -8,9 +8,9 @@ A model with four measured inputs, all from dpdBenchmark on one machine:
   alpha, beta  one-way latency (s) and bandwidth (bytes/s) of a message (dpdBenchmark -pingpong).
 
 One rank's step on P ranks, N particles at density rho in a cube of side L = (N / rho)^(1/3):
-  compute   t_p (N / P) (1 + d),   d = 0.75 r_c / w for slabs of width w = L / P (the pairs between
-            the lower ghost plane and the first own plane done by both ranks: half a plane of pairs per
-            face, one face per rank); for cubes of edge w = L / P^(1/3), three such faces.
+  compute   t_p (N / P) (1 + d),   d = r_c / w for slabs of width w = L / P (the plane of cells below
+            the slab, one cutoff wide, is a home plane of both ranks: its pair work is done twice);
+            for cubes of edge w = L / P^(1/3), three such faces.
   ghosts    G = 2 rho L^2 r_c per slab (two planes); rho ((w + 2 r_c)^3 - w^3) per cube
   exchange  t_g G + m (alpha + 88 G / (m beta)) with m messages per step: 2 x 2 for slabs (migration
             and ghosts, to two neighbours), 2 x 26 for cubes; or, as built now, all-to-all: 2 P
@@ -28,7 +28,7 @@ def slab_step(N, P, a):
     w = L / P
     if w < a.rc:  # not even one plane of cells per rank
         return None
-    d = 0.75 * a.rc / w if P > 1 else 0.0
+    d = a.rc / w if P > 1 else 0.0
     G = 2 * a.rho * L * L * a.rc if P > 1 else 0.0
     messages = (2 * P if a.alltoall else 4) if P > 1 else 0
     comm = messages * a.alpha + 88 * G / a.beta
@@ -40,7 +40,7 @@ def cube_step(N, P, a):
     w = L / P ** (1 / 3)
     if w < a.rc:
         return None
-    d = 3 * 0.75 * a.rc / w if P > 1 else 0.0
+    d = 3 * a.rc / w if P > 1 else 0.0
     G = a.rho * ((w + 2 * a.rc) ** 3 - w ** 3) if P > 1 else 0.0
     comm = (52 * a.alpha + 88 * G / a.beta) if P > 1 else 0.0
     return a.tp * N / P * (1 + d) + a.tg * G + comm
@@ -70,7 +70,7 @@ def main():
     n1 = 256000
     L = (n1 / a.rho) ** (1 / 3)
     G = 2 * a.rho * L * L * a.rc
-    t2 = a.tp * n1 * (1 + 0.75 * a.rc / L) + a.tg * G + (4 if not a.alltoall else 4) * a.alpha + 88 * G / a.beta
+    t2 = a.tp * n1 * (1 + a.rc / L) + a.tg * G + 4 * a.alpha + 88 * G / a.beta
     line = f"# weak scaling, 2 ranks x 256,000: model {a.tp * n1 / t2:.3f}"
     if a.measured2 is not None:
         line += f", measured {a.measured2:.3f}"
