@@ -597,3 +597,38 @@ TEST(CellList, TheSortWrapsParticlesThatLeftTheBox) {
         EXPECT_NEAR(p.rz[k], r.z(), 1e-12) << "id " << p.id[k];
     }
 }
+
+TEST(CellList, TheSortTakesTheArraysInTheGivenVisitOrderAndDropsTheDiscarded) {
+    // Six particles in one cell and one in another; the sort is told to take indices 4-5 first, then
+    // 0-3, and to discard index 1 (a decomposed run's order of storage against one process's order,
+    // and a particle that left for another rank). In the cell the stable order is the visit order:
+    // ids 14, 15, 10, 12, 13; the other cell holds id 16; the discarded one lies past the last cell.
+    Box box;
+    box.lo = Eigen::Vector3d(0, 0, 0);
+    box.hi = Eigen::Vector3d(4, 4, 4);
+    Particles p;
+    for (int k = 0; k < 6; ++k) p.add(10 + k, 0, 0.5 + 0.05 * k, 0.5, 0.5);
+    p.add(16, 0, 2.5, 2.5, 2.5);
+    CellList cells;
+    cells.setup(box, 1.0);
+    cells.setVisitOrder({{4, 7}, {0, 4}});
+    cells.setDiscarded({1});
+    cells.sortParticles(p);
+    ASSERT_EQ(cells.sortedCount(), 6u);
+    const int home = cells.cellIndex(0, 0, 0);
+    ASSERT_EQ(cells.cellStart(home + 1) - cells.cellStart(home), 5u);
+    const std::uint64_t expected[5] = {14, 15, 10, 12, 13};
+    for (int k = 0; k < 5; ++k) EXPECT_EQ(p.id[cells.cellStart(home) + k], expected[k]) << k;
+    const int other = cells.cellIndex(2, 2, 2);
+    ASSERT_EQ(cells.cellStart(other + 1) - cells.cellStart(other), 1u);
+    EXPECT_EQ(p.id[cells.cellStart(other)], 16u);
+    EXPECT_EQ(p.id[6], 11u);  // discarded: after every cell
+
+    // The next sort takes the arrays in order again, and a visit order that misses particles is refused.
+    p.shorten(6, false);
+    cells.sortParticles(p);
+    EXPECT_EQ(cells.sortedCount(), 6u);
+    EXPECT_EQ(p.id[cells.cellStart(home)], 14u);
+    cells.setVisitOrder({{0, 3}});
+    EXPECT_THROW(cells.sortParticles(p), std::logic_error);
+}
