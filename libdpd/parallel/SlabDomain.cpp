@@ -272,24 +272,17 @@ std::size_t SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
     return begin;
 }
 
-Particles SlabDomain::gatherToAll(const Particles& p) const {
-    std::vector<char> mine, all;
-    mine.reserve(p.size() * sizeof(ParticleRecord));
-    for (std::size_t i = 0; i < p.size(); ++i) appendRecord(p, i, mine);
-    std::vector<std::size_t> counts;
-    comm_->gather(mine, all, counts);
-    comm_->broadcast(all);
-    Particles out;
-    appendRecords(all.data(), all.size() / sizeof(ParticleRecord), out);
-    return out;
-}
+Particles SlabDomain::gather(const Particles& p) const { return gatherParticles(p, false); }
 
-Particles SlabDomain::gather(const Particles& p) const {
+Particles SlabDomain::gatherToAll(const Particles& p) const { return gatherParticles(p, true); }
+
+Particles SlabDomain::gatherParticles(const Particles& p, bool everywhere) const {
     std::vector<char> mine, all;
     mine.reserve(p.size() * sizeof(ParticleRecord));
     for (std::size_t i = 0; i < p.size(); ++i) appendRecord(p, i, mine);
     std::vector<std::size_t> counts;
     comm_->gather(mine, all, counts);
+    if (everywhere) comm_->broadcast(all);
     Particles out;
     appendRecords(all.data(), all.size() / sizeof(ParticleRecord), out);
     return out;

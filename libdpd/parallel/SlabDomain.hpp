@@ -71,6 +71,8 @@ public:
     Particles gatherToAll(const Particles& p) const;
 
 private:
+    // Every rank's particles in rank order, on the root or (everywhere) on every rank.
+    Particles gatherParticles(const Particles& p, bool everywhere) const;
     // The plane a particle's sort will put it in (the sort wraps the position, so the same wrap here).
     int planeOf(const CellList& cells, double x) const;
 
