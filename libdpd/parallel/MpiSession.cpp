@@ -6,10 +6,26 @@
 #include <mpi.h>
 #endif
 
+#include <cstdlib>
+
 namespace dpd {
+
+namespace {
+
+// Whether a launcher started this process as one rank of several (OpenMPI's mpirun, or a PMI/PMIx
+// launcher such as Slurm's srun). A program started by hand is one rank and does not start MPI at
+// all: a singleton MPI_Init costs a third of a second and depends on the MPI runtime's health.
+bool launchedAsRank() {
+    for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+        if (std::getenv(variable)) return true;
+    return false;
+}
+
+}  // namespace
 
 MpiSession::MpiSession(int& argc, char**& argv) {
 #ifdef DPD_HAVE_MPI
+    if (!launchedAsRank()) return;
     // Only the main thread calls MPI (the OpenMP threads work between the calls).
     int provided = 0;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);

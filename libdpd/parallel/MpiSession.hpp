@@ -1,6 +1,7 @@
 #pragma once
 // Starts MPI for the life of a program (a thin main makes one first) and ends it. Without MPI in the
-// build, or when the program was not started by mpirun, the run is one rank as before.
+// build, or when no launcher (mpirun, srun) started the program, MPI is not started and the run is
+// one rank as before.
 namespace dpd {
 
 class MpiSession {
