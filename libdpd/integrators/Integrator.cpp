@@ -31,4 +31,9 @@ std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const Wa
     return integrator;
 }
 
+void requireRunsOnSeveralRanks(const Integrator& integrator, const IntegratorSettings& s) {
+    if (!integrator.runsOnSeveralRanks())
+        s.coeffs.fail("type", integrator.name() + " cannot run on several ranks yet (GrootWarren, DPDVV and Euler can)");
+}
+
 }  // namespace dpd

@@ -54,5 +54,7 @@ struct IntegratorSettings {
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s);
 // The same for a scene's walls: an InputError at the type's keyword when the scheme cannot run them.
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallList& walls);
+// An InputError at the type's keyword when the scheme cannot run decomposed over several ranks.
+void requireRunsOnSeveralRanks(const Integrator& integrator, const IntegratorSettings& s);
 
 }  // namespace dpd

@@ -39,18 +39,6 @@ bool builtWithMpi() {
 #endif
 }
 
-void Communicator::exchange(const std::vector<std::vector<char>>& send, std::vector<char>& received,
-                            std::vector<std::size_t>& counts) const {
-    if (static_cast<int>(send.size()) != size_) throw std::logic_error("Communicator::exchange: one buffer per rank");
-    std::vector<char> bytes;
-    std::vector<std::size_t> sendCounts;
-    for (const auto& b : send) {
-        bytes.insert(bytes.end(), b.begin(), b.end());
-        sendCounts.push_back(b.size());
-    }
-    exchange(bytes, sendCounts, received, counts);
-}
-
 void Communicator::exchange(const std::vector<char>& sendBytes, const std::vector<std::size_t>& sendSizes,
                             std::vector<char>& received, std::vector<std::size_t>& counts) const {
     if (static_cast<int>(sendSizes.size()) != size_) throw std::logic_error("Communicator::exchange: one count per rank");

@@ -18,12 +18,9 @@ public:
     bool isRoot() const { return rank_ == 0; }
     bool parallel() const { return size_ > 1; }
 
-    // Every rank sends send[r] to rank r and receives what each rank sent it, concatenated in rank
-    // order; counts[r] says how many bytes came from rank r. send.size() must be size().
-    void exchange(const std::vector<std::vector<char>>& send, std::vector<char>& received,
-                  std::vector<std::size_t>& counts) const;
-    // The same with what goes to every rank in one buffer, rank 0's bytes first: sendCounts[r] bytes
-    // for rank r.
+    // Every rank sends each rank its part of `send` (rank 0's bytes first, sendCounts[r] bytes for rank
+    // r) and receives what each rank sent it, concatenated in rank order; counts[r] says how many bytes
+    // came from rank r. sendCounts.size() must be size().
     void exchange(const std::vector<char>& send, const std::vector<std::size_t>& sendCounts, std::vector<char>& received,
                   std::vector<std::size_t>& counts) const;
     // Every rank's bytes, concatenated in rank order, on the root only (elsewhere `all` is left empty);

@@ -48,6 +48,9 @@ struct MigrationHeader {
     std::uint64_t particles = 0, deferred = 0;
 };
 
+// The plane a particle's sort will put it in (the sort wraps the position, so the same wrap here).
+int planeOf(const CellList& cells, double x) { return cells.axisCell(cells.box().wrap(x, 0), 0); }
+
 }  // namespace
 
 SlabDomain::SlabDomain(const Communicator& comm, SlabDecomposition slabs) : comm_(&comm), slabs_(std::move(slabs)) {}
@@ -55,13 +58,10 @@ SlabDomain::SlabDomain(const Communicator& comm, SlabDecomposition slabs) : comm
 std::shared_ptr<SlabDomain> SlabDomain::balanced(const Communicator& comm, const CellList& cells, const Particles& p,
                                                  const std::vector<std::uint8_t>& frozenOfSpecies) {
     std::vector<double> weights(static_cast<std::size_t>(cells.cellsPerAxis()[0]), 0.0);
-    const SlabDomain probe(comm, SlabDecomposition(cells.cellsPerAxis()[0]));
     for (std::size_t i = 0; i < p.size(); ++i)
-        weights[probe.planeOf(cells, p.rx[i])] += frozenOfSpecies[p.species[i]] ? SlabDecomposition::kFrozenWeight : 1.0;
+        weights[planeOf(cells, p.rx[i])] += frozenOfSpecies[p.species[i]] ? SlabDecomposition::kFrozenWeight : 1.0;
     return std::make_shared<SlabDomain>(comm, SlabDecomposition::balanced(weights, comm.size()));
 }
-
-int SlabDomain::planeOf(const CellList& cells, double x) const { return cells.axisCell(cells.box().wrap(x, 0), 0); }
 
 std::vector<std::uint8_t> SlabDomain::homePlanes() const {
     const int n = slabs_.planes();
@@ -129,16 +129,19 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
                 ++headers[to].deferred;
             }
         }
-    std::vector<std::vector<char>> send(ranks);
+    // Each rank's part in one buffer, in rank order: header, particles, crossings.
+    std::vector<char> send;
+    std::vector<std::size_t> sendBytes(ranks);
     for (int r = 0; r < ranks; ++r) {
-        send[r].resize(sizeof(MigrationHeader));
-        std::memcpy(send[r].data(), &headers[r], sizeof(MigrationHeader));
-        send[r].insert(send[r].end(), records[r].begin(), records[r].end());
-        send[r].insert(send[r].end(), crossings[r].begin(), crossings[r].end());
+        const char* h = reinterpret_cast<const char*>(&headers[r]);
+        send.insert(send.end(), h, h + sizeof(MigrationHeader));
+        send.insert(send.end(), records[r].begin(), records[r].end());
+        send.insert(send.end(), crossings[r].begin(), crossings[r].end());
+        sendBytes[r] = sizeof(MigrationHeader) + records[r].size() + crossings[r].size();
     }
     std::vector<char> received;
     std::vector<std::size_t> counts;
-    comm_->exchange(send, received, counts);
+    comm_->exchange(send, sendBytes, received, counts);
 
     std::size_t kept = 0;
     for (std::size_t k = 0; k < deferred.size(); ++k)

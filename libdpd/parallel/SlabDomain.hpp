@@ -73,8 +73,6 @@ public:
 private:
     // Every rank's particles in rank order, on the root or (everywhere) on every rank.
     Particles gatherParticles(const Particles& p, bool everywhere) const;
-    // The plane a particle's sort will put it in (the sort wraps the position, so the same wrap here).
-    int planeOf(const CellList& cells, double x) const;
 
     const Communicator* comm_;
     SlabDecomposition slabs_;

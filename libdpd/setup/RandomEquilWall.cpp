@@ -77,8 +77,7 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     // Under mpirun the ranks share the box (docs/parallel.md); every rank then goes on with all of it.
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict", &Communicator::world());
     const auto integrator = makeIntegrator(model.integrator);
-    if (sys.domain() && !integrator->runsOnSeveralRanks())
-        model.integrator.coeffs.fail("type", integrator->name() + " cannot run on several ranks yet (GrootWarren, DPDVV and Euler can)");
+    if (sys.domain()) requireRunsOnSeveralRanks(*integrator, model.integrator);
     useThreadsForParticles(sys.particles.size());
     sys.sortByCell();
     sys.computeForces();

@@ -84,13 +84,14 @@ Snapshot snapshotOf(const System& sys) {
     return s;
 }
 
-// Every rank's part of a snapshot on the first rank, in the order of one rank's run (the file a
-// single rank would write); the snapshot itself elsewhere, or on one rank.
-Snapshot wholeSnapshot(const System& sys, const Snapshot& part) {
+// What to write of a snapshot: on one rank the snapshot itself; in a decomposed run every rank's part
+// gathered on the first rank (into `gathered`), in the order of one rank's run (the file a single rank
+// would write).
+const Snapshot& wholeSnapshot(const System& sys, const Snapshot& part, Snapshot& gathered) {
     if (!sys.domain()) return part;
-    Snapshot s = part;
-    s.particles = sys.domain()->gather(part.particles);
-    return s;
+    gathered = part;
+    gathered.particles = sys.domain()->gather(part.particles);
+    return gathered;
 }
 
 // What the walls did on every rank together (their counts on one rank).
@@ -180,8 +181,7 @@ private:
     // What a decomposed run cannot do yet: said before anything runs, at the keyword that asks for it.
     static void requireDecomposable(const Integrator& integrator, const FunctionObjects& functions, const DpdModel& model,
                                     const RunControl& control) {
-        if (!integrator.runsOnSeveralRanks())
-            model.integrator.coeffs.fail("type", integrator.name() + " cannot run on several ranks yet (GrootWarren, DPDVV and Euler can)");
+        requireRunsOnSeveralRanks(integrator, model.integrator);
         const std::string single = functions.firstSingleRank();
         if (!single.empty()) control.functions.fail(single, "this function object cannot run on several ranks yet");
     }
@@ -273,7 +273,8 @@ private:
     [[noreturn]] void stopUnstable(const System& sys, const std::string& problem) {
         const std::string dir = (fs::path(caseDir_) / timeName(lastGood_.time)).string();
         // Only the particles: the sampling of that time, if it was written, stays as it was.
-        const Snapshot whole = wholeSnapshot(sys, lastGood_);
+        Snapshot gathered;
+        const Snapshot& whole = wholeSnapshot(sys, lastGood_, gathered);
         if (Communicator::world().isRoot() && !fs::exists(fs::path(dir) / "particles.h5"))
             writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& d) { writeSnapshot(d, whole); });
         throw InstabilityError("the run went unstable at time " + timeName(sys.time) + " (step " +
@@ -295,7 +296,8 @@ private:
 
     // Writes the state just checked (lastGood_) and the function objects' data, as one directory.
     void write(const FunctionObjects& functions, const System& sys) {
-        const Snapshot whole = wholeSnapshot(sys, lastGood_);
+        Snapshot gathered;
+        const Snapshot& whole = wholeSnapshot(sys, lastGood_, gathered);
         const FunctionObjects summed = sys.domain() ? functions.summedOverRanks(sys.domain()->communicator()) : FunctionObjects();
         if (Communicator::world().isRoot())
             writeTimeDirectory(caseDir_, timeName(lastGood_.time), [&](const std::string& dir) {

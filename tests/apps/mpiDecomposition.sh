@@ -109,8 +109,7 @@ writeChannel "$ch" 3.5 "(-6 -3 -4.5)" "(6 3 4.5)" 5
 controlDict "$ch" 10 "functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; } }"
 "$bin/blockFrozenWall" -case "$ch" > "$ch/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall: $(cat "$ch/log.blockFrozenWall")"
 compareRuns channel "$ch" 10 channel
-grep -q "Ranks          : 4, slabs of cell planes along x 0-2 | 3-5 | 6-8 | 9-11 (of 12)" "$work/channel.ref/log" &&
-    fail "the run on one process reports ranks"
+grep -q "^Ranks" "$work/channel.ref/log" && fail "the run on one process reports ranks"
 
 # 2. Tunable-slip walls (friction and noise from the walls, specular reflection), no frozen particles.
 ts=$work/tunable
