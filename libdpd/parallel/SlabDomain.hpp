@@ -16,6 +16,7 @@
 #include "core/Particles.hpp"
 #include "neighbour/CellList.hpp"
 #include "parallel/Communicator.hpp"
+#include "parallel/ParticleColumns.hpp"
 #include "parallel/SlabDecomposition.hpp"
 #include "walls/Wall.hpp"
 
@@ -79,7 +80,7 @@ private:
     // What migrate found of the particles it kept, for addGhosts: those in the slab's first and last
     // planes (in one process's order).
     mutable std::vector<std::uint32_t> firstPlaneOwn_, lastPlaneOwn_;
-    mutable std::vector<std::int32_t> planes_;  // migrate's scratch: each particle's plane
+    mutable ParticleRefs firstPlaneRefs_, lastPlaneRefs_;  // addGhosts' lists of what it sends, kept between steps
     // Kept between steps, so that a step allocates (and the kernel clears) no new pages for them.
     mutable std::vector<char> sendBuffer_, receiveBuffer_;
 };
