@@ -2,6 +2,7 @@
 // no-slip solution of the case's body force and walls, and every geometry it cannot serve is refused
 // naming the keyword.
 #include "analysis/PoiseuilleFit.hpp"
+#include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "case/DpdProperties.hpp"
@@ -37,12 +38,7 @@ InitialFlow read(const std::string& props, const std::string& fluid) {
 }
 
 std::string refusal(const std::string& props, const std::string& fluid) {
-    try {
-        read(props, fluid);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { read(props, fluid); });
 }
 
 }  // namespace

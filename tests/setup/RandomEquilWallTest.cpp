@@ -2,6 +2,7 @@
 // (geometry/Percolation) it relies on.
 #include "../geometry/GeometryTestFiles.hpp"
 
+#include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "geometry/GeometryDictionary.hpp"
 #include "geometry/Percolation.hpp"
@@ -51,12 +52,7 @@ protected:
     }
     std::string error(const Picture& mask, const std::string& dict) {
         RandomEquilWallReport r;
-        try {
-            build(mask, dict, r);
-        } catch (const InputError& e) {
-            return e.what();
-        }
-        return "";
+        return test::inputErrorOf([&] { build(mask, dict, r); });
     }
 };
 

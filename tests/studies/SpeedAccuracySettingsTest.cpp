@@ -2,6 +2,7 @@
 // not one of the integrators, and a viscosity profile too coarse for the reverse-Poiseuille fit, are
 // input errors naming the keyword; a good dictionary turns pressure sampling on and sets the viscosity
 // probe.
+#include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "studies/SpeedAccuracyStudy.hpp"
 #include "io/Dictionary.hpp"
@@ -24,12 +25,7 @@ SpeedAccuracySettings read(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-    try {
-        read(text);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { read(text); });
 }
 
 const std::string kViscosity = "viscosity { lengthRatio 2; g 0.05; bins 24; exclude 1; equilibrationTime 2; "

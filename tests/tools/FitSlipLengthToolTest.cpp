@@ -3,6 +3,7 @@
 // error naming the file and keyword, and writes nothing.
 #include "tools/FitSlipLengthTool.hpp"
 
+#include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "sampling/BinAccumulatorFile.hpp"
@@ -109,12 +110,7 @@ protected:
     bool wroteNothing() const { return !fs::exists(dir_ / "postProcessing/fitSlipLength"); }
     // The InputError of a run (message), "" when it succeeds.
     std::string inputError() const {
-        try {
-            run();
-        } catch (const InputError& e) {
-            return e.what();
-        }
-        return "";
+        return test::inputErrorOf([&] { run(); });
     }
 
     fs::path dir_;

@@ -4,6 +4,7 @@
 // fitted; bad input names the file and keyword.
 #include "tools/SlipTensorTool.hpp"
 
+#include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "sampling/BinProfile.hpp"
@@ -99,12 +100,7 @@ protected:
         return Dictionary::readFile((dir_ / "postProcessing/slipTensor/10/fit.dat").string());
     }
     std::string inputError() const {
-        try {
-            run();
-        } catch (const InputError& e) {
-            return e.what();
-        }
-        return "";
+        return test::inputErrorOf([&] { run(); });
     }
     fs::path dir_;
 };

@@ -1,6 +1,7 @@
 // Slip lever a_wf (docs/methods.md section 1 and docs/walls.md 3.4): an unlike pair of constant/dpdProperties that is
 // left out, or given without `a`, is mixed from the like pairs as a_wf = sqrt(a_ww a_ff), and the log
 // notes say so; a pair that cannot be determined is an error naming the file and the pair.
+#include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "case/DpdProperties.hpp"
@@ -21,12 +22,7 @@ DpdModel model(const std::string& pairs) {
 }
 
 std::string inputError(const std::string& pairs) {
-    try {
-        model(pairs);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { model(pairs); });
 }
 
 }  // namespace

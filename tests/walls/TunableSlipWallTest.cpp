@@ -2,6 +2,7 @@
 // values, fluctuation-dissipation (a gas held only by the walls takes the walls' temperature), the WCA
 // wall keeping a DPD fluid out (dt up to sigma / 50), thread independence, the predicted slip length, and the
 // errors of constant/dpdProperties.
+#include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "forces/UniformBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
@@ -89,12 +90,7 @@ std::string inputError(const std::string& wallEntries, const std::string& integr
                              "pairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n" + integrator +
                              "walls\n{\n    lower\n    {\n        type plane;\n        point (0 0 -3);\n"
                              "        normal (0 0 1);\n" + wallEntries + "\n    }\n}\n";
-    try {
-        readDpdModel(Dictionary::parse(text, "constant/dpdProperties"));
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::inputErrorOf([&] { readDpdModel(Dictionary::parse(text, "constant/dpdProperties")); });
 }
 
 }  // namespace
