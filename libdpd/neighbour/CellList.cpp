@@ -65,6 +65,36 @@ void CellList::setup(const Box& box, double cutoff) {
     }
     // Two entries per cell, one more for the discarded particles' key (2 numCells), and the end.
     start_.assign(2 * static_cast<std::size_t>(numCells()) + 2, 0);
+    setKeyWindows();
+}
+
+void CellList::setHomePlanes(std::vector<std::uint8_t> home) {
+    homePlanes_ = std::move(home);
+    setKeyWindows();
+}
+
+void CellList::setKeyWindows() {
+    const auto nKeys = static_cast<std::uint32_t>(start_.size() - 1);
+    keyWindows_.clear();
+    if (homePlanes_.empty()) {
+        keyWindows_.emplace_back(0, nKeys);
+        return;
+    }
+    // A plane is keyed if a home plane lies within two planes below it or one above: the pair loop
+    // reads its home planes and the next (the half stencil goes up along x), a slab's neighbours
+    // read the plane after their ghosts'.
+    const int nx = n_[0];
+    const auto home = [&](int ix) { return isHomePlane(((ix % nx) + nx) % nx); };
+    const auto keysPerPlane = static_cast<std::uint32_t>(2 * n_[1] * n_[2]);
+    for (int ix = 0; ix < nx; ++ix) {
+        if (!(home(ix - 2) || home(ix - 1) || home(ix) || home(ix + 1))) continue;
+        const std::uint32_t first = static_cast<std::uint32_t>(ix) * keysPerPlane;
+        if (!keyWindows_.empty() && keyWindows_.back().second == first) keyWindows_.back().second = first + keysPerPlane;
+        else keyWindows_.emplace_back(first, first + keysPerPlane);
+    }
+    const std::uint32_t discardKey = nKeys - 1;
+    if (!keyWindows_.empty() && keyWindows_.back().second == discardKey) keyWindows_.back().second = nKeys;
+    else keyWindows_.emplace_back(discardKey, nKeys);
 }
 
 void CellList::sortParticles(Particles& p, SortForces forces) {
@@ -181,39 +211,75 @@ void CellList::countingSort() {
     for (const auto& [first, end] : visit) visited += end >= first && end <= n ? end - first : n + 1;
     if (!visit.empty() && visited != n) throw std::logic_error("CellList: the visit order does not cover the particles");
     std::vector<std::uint32_t> totals(static_cast<std::size_t>(omp_get_max_threads()), 0);
+    std::uint32_t windowKeys = 0;
+    for (const auto& [first, end] : keyWindows_) windowKeys += end - first;
     start[0] = 0;
+    bool everyKeyCounted = true;
 #pragma omp parallel
     {
         const std::uint32_t threads = static_cast<std::uint32_t>(omp_get_num_threads());
         const std::uint32_t t = static_cast<std::uint32_t>(omp_get_thread_num());
-        const std::uint32_t kBegin = static_cast<std::uint32_t>(std::uint64_t(nKeys) * t / threads);
-        const std::uint32_t kEnd = static_cast<std::uint32_t>(std::uint64_t(nKeys) * (t + 1) / threads);
+        // This thread's share of the windows' keys, as parts of them; no particle has a key between
+        // the windows, so one range [kBegin, kEnd) still tells a particle's key is this thread's.
+        const auto vBegin = static_cast<std::uint32_t>(std::uint64_t(windowKeys) * t / threads);
+        const auto vEnd = static_cast<std::uint32_t>(std::uint64_t(windowKeys) * (t + 1) / threads);
+        struct Part {
+            std::uint32_t begin, end;
+            bool opensWindow;  // begin is its window's first key
+        };
+        std::vector<Part> parts;
+        std::uint32_t v = 0;
+        for (const auto& [first, end] : keyWindows_) {
+            const std::uint32_t lo = std::max(vBegin, v), hi = std::min(vEnd, v + (end - first));
+            if (lo < hi) parts.push_back({first + (lo - v), first + (hi - v), lo == v});
+            v += end - first;
+        }
+        const std::uint32_t kBegin = parts.empty() ? 0 : parts.front().begin;
+        const std::uint32_t kEnd = parts.empty() ? 0 : parts.back().end;
         const std::uint32_t width = kEnd - kBegin;
         // start[k + 1]: the count of key k, then the running sum over this thread's keys up to k.
-        std::fill(start + kBegin + 1, start + kEnd + 1, 0u);
+        for (const Part& part : parts) std::fill(start + part.begin + 1, start + part.end + 1, 0u);
         for (std::uint32_t i = 0; i < n; ++i)
             if (key[i] - kBegin < width) ++start[key[i] + 1];
-        for (std::uint32_t k = kBegin + 1; k < kEnd; ++k) start[k + 1] += start[k];
-        totals[t] = width > 0 ? start[kEnd] : 0;
+        std::uint32_t running = 0;
+        for (const Part& part : parts)
+            for (std::uint32_t k = part.begin; k < part.end; ++k) {
+                running += start[k + 1];
+                start[k + 1] = running;
+            }
+        totals[t] = running;
 #pragma omp barrier
-        std::uint32_t before = 0;  // particles of the keys below this thread's
-        for (std::uint32_t s = 0; s < t; ++s) before += totals[s];
-        std::uint32_t begin = before;
-        for (std::uint32_t k = kBegin; k < kEnd; ++k) {
-            fill[k] = begin;
-            begin = start[k + 1] + before;
-            start[k + 1] = begin;
+        std::uint32_t before = 0, counted = 0;  // particles of the keys below this thread's; of all
+        for (std::uint32_t s = 0; s < threads; ++s) {
+            if (s < t) before += totals[s];
+            counted += totals[s];
         }
-        if (visit.empty()) {
+        // A particle whose key lies in no window was counted by nobody: nothing placed, and the
+        // sort refuses below (its place would be read from cell starts left from another sort).
+        const bool place = counted == n;
+        if (t == 0) everyKeyCounted = place;
+        std::uint32_t begin = before;
+        for (const Part& part : parts) {
+            if (!place) break;
+            // A window's first key: its start, which no other key's end writes.
+            if (part.opensWindow) start[part.begin] = begin;
+            for (std::uint32_t k = part.begin; k < part.end; ++k) {
+                fill[k] = begin;
+                begin = start[k + 1] + before;
+                start[k + 1] = begin;
+            }
+        }
+        if (place && visit.empty()) {
             for (std::uint32_t i = 0; i < n; ++i)
                 if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
-        } else {  // the ranges in the order given (setVisitOrder)
+        } else if (place) {  // the ranges in the order given (setVisitOrder)
             for (const auto& [first, end] : visit)
                 for (std::uint32_t i = first; i < end; ++i)
                     if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
         }
     }
     visit_.clear();
+    if (!everyKeyCounted) throw std::logic_error("CellList: a particle lies outside the planes this rank sorts");
 }
 
 std::size_t CellList::memoryBytes() const {

@@ -72,7 +72,10 @@ public:
     const Eigen::Vector3d& cellSize() const { return size_; }
     // The planes of cells (constant x index) whose cells a pair loop visits as home cells: all of them
     // (the default), or, for one rank of a decomposed run, its own and the one before (parallel/SlabDomain).
-    void setHomePlanes(std::vector<std::uint8_t> home) { homePlanes_ = std::move(home); }
+    // The sort then counts only the keys of the planes that can hold particles or be read (home
+    // planes, the planes next to them, and one more on either side), not the whole box's grid: the
+    // other planes' cell starts are left as they were, and are not read.
+    void setHomePlanes(std::vector<std::uint8_t> home);
     bool isHomePlane(int ix) const { return homePlanes_.empty() || homePlanes_[static_cast<std::size_t>(ix)] != 0; }
     // Bytes held (capacities of the cell starts, the sort keys and order, and the sort's scratch).
     std::size_t memoryBytes() const;
@@ -93,6 +96,10 @@ private:
     std::vector<std::uint32_t> start_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     std::vector<std::uint8_t> homePlanes_;  // empty: every plane
+    // The sort's keys in ascending ranges [first, second), the discarded particles' key the last:
+    // every key, or (with home planes) those of the planes near them.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> keyWindows_;
+    void setKeyWindows();
     // For the next sort only: empty, every particle in array order, none discarded.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> visit_;
     std::vector<std::uint32_t> discarded_;

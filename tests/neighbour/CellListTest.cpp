@@ -632,3 +632,45 @@ TEST(CellList, TheSortTakesTheArraysInTheGivenVisitOrderAndDropsTheDiscarded) {
     cells.setVisitOrder({{0, 3}});
     EXPECT_THROW(cells.sortParticles(p), std::logic_error);
 }
+
+// A rank's sort counts the keys of the planes near its home planes only: the cell starts it keeps
+// are those of a sort over the whole grid, on one thread and on three (each thread's share of the
+// keys then spans the windows' gap), and a particle outside those planes is refused, not misplaced.
+TEST(CellList, WithHomePlanesTheSortKeepsTheStartsOfThePlanesNearThem) {
+    Box box;  // 12 planes of 4 x 4 cells
+    box.lo = Eigen::Vector3d(0, 0, 0);
+    box.hi = Eigen::Vector3d(12, 4, 4);
+    Particles p;
+    std::uint64_t id = 0;
+    // Planes 11, 0, 1, 2 and 3 hold particles (a rank with planes 0-2, its ghosts 11 and 3).
+    for (const double x : {11.5, 0.2, 0.7, 1.5, 2.9, 3.1, 11.9})
+        for (const double y : {0.5, 2.5, 3.7})
+            p.add(id++, 0, x, y, std::fmod(x * 7.0 + y, 4.0));
+    for (const int threads : {1, 3}) {
+        omp_set_num_threads(threads);
+        Particles whole = p, windowed = p;
+        CellList all, near;
+        all.setup(box, 1.0);
+        near.setup(box, 1.0);
+        std::vector<std::uint8_t> home(12, 0);
+        home[11] = home[0] = home[1] = home[2] = 1;  // planes 0-2 and the one before
+        near.setHomePlanes(home);
+        all.sortParticles(whole);
+        near.sortParticles(windowed);
+        EXPECT_EQ(near.sortedCount(), all.sortedCount());
+        EXPECT_EQ(windowed.id, whole.id);
+        // Planes 10-11 and 0-4 (the home planes, one below, two above): every cell start as the whole
+        // sort's. The keys of planes 0-4, then those of 10-11: with three threads the last one's
+        // share spans the gap between them.
+        for (const int ix : {10, 11, 0, 1, 2, 3, 4})
+            for (int c = near.cellIndex(ix, 0, 0); c < near.cellIndex(ix, 0, 0) + 16; ++c) {
+                EXPECT_EQ(near.cellStart(c), all.cellStart(c)) << "plane " << ix << " cell " << c << " threads " << threads;
+                EXPECT_EQ(near.mobileEnd(c), all.mobileEnd(c));
+            }
+        // A particle in plane 6, far from the home planes.
+        Particles stray = p;
+        stray.add(id, 0, 6.5, 1.0, 1.0);
+        EXPECT_THROW(near.sortParticles(stray), std::logic_error) << threads;
+    }
+    omp_set_num_threads(1);
+}
