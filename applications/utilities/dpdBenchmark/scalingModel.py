@@ -12,7 +12,7 @@ One rank's step on P ranks, N particles at density rho in a cube of side L = (N 
             the slab, one cutoff wide, is a home plane of both ranks: its pair work is done twice);
             for cubes of edge w = L / P^(1/3), three such faces.
   ghosts    G = 2 rho L^2 r_c per slab (two planes); rho ((w + 2 r_c)^3 - w^3) per cube
-  exchange  t_g G + m (alpha + 88 G / (m beta)) with m messages per step: 2 x 2 for slabs (migration
+  exchange  t_g G + m (alpha + 81 G / (m beta)) with m messages per step: 2 x 2 for slabs (migration
             and ghosts, to two neighbours), 2 x 26 for cubes; or, as built now, all-to-all: 2 P
             messages of which 2 x 2 carry data.
 Efficiency (strong scaling) E(P) = t_p N / (P T(P)). Slabs need at least one cell plane (one cutoff)
@@ -31,7 +31,7 @@ def slab_step(N, P, a):
     d = a.rc / w if P > 1 else 0.0
     G = 2 * a.rho * L * L * a.rc if P > 1 else 0.0
     messages = (2 * P if a.alltoall else 4) if P > 1 else 0
-    comm = messages * a.alpha + 88 * G / a.beta
+    comm = messages * a.alpha + 81 * G / a.beta
     return a.tp * N / P * (1 + d) + a.tg * G + comm
 
 
@@ -42,7 +42,7 @@ def cube_step(N, P, a):
         return None
     d = 3 * a.rc / w if P > 1 else 0.0
     G = a.rho * ((w + 2 * a.rc) ** 3 - w ** 3) if P > 1 else 0.0
-    comm = (52 * a.alpha + 88 * G / a.beta) if P > 1 else 0.0
+    comm = (52 * a.alpha + 81 * G / a.beta) if P > 1 else 0.0
     return a.tp * N / P * (1 + d) + a.tg * G + comm
 
 
@@ -54,7 +54,7 @@ def efficiency(step, N, P, a):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--tp", type=float, default=9.1e-8, help="s per particle-step and core, every core of the node busy")
-    p.add_argument("--tg", type=float, default=2.9e-7, help="s per ghost particle and step (exchange, sort, pair inputs)")
+    p.add_argument("--tg", type=float, default=8e-8, help="s per ghost particle and step (exchange, sort, pair inputs)")
     p.add_argument("--alpha", type=float, default=2.9e-7, help="one-way latency, s (this machine: 0.29 us)")
     p.add_argument("--beta", type=float, default=1.0e10, help="bandwidth, bytes/s (this machine: 10 GB/s)")
     p.add_argument("--rho", type=float, default=3.0)
@@ -70,7 +70,7 @@ def main():
     n1 = 256000
     L = (n1 / a.rho) ** (1 / 3)
     G = 2 * a.rho * L * L * a.rc
-    t2 = a.tp * n1 * (1 + a.rc / L) + a.tg * G + 4 * a.alpha + 88 * G / a.beta
+    t2 = a.tp * n1 * (1 + a.rc / L) + a.tg * G + 4 * a.alpha + 81 * G / a.beta
     line = f"# weak scaling, 2 ranks x 256,000: model {a.tp * n1 / t2:.3f}"
     if a.measured2 is not None:
         line += f", measured {a.measured2:.3f}"
