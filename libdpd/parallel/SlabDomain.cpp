@@ -77,13 +77,12 @@ struct InnerPlanes {
         }
         return _mm256_movemask_pd(outsideBox) == 0 && _mm_movemask_epi8(outsidePlanes) == 0;
 #else
-        int outside = 0;
         for (std::uint32_t k = 0; k < kBlock; ++k) {
+            if (!(x[k] >= xLo && x[k] < xHi)) return false;  // outside the box, or NaN: before the int conversion
             const int plane = static_cast<int>((x[k] - xLo) * invCellSize);
-            outside |= static_cast<int>(x[k] < xLo) | static_cast<int>(x[k] >= xHi) | static_cast<int>(plane <= first) |
-                       static_cast<int>(plane >= end - 1);
+            if (plane <= first || plane >= end - 1) return false;
         }
-        return outside == 0;
+        return true;
 #endif
     }
 };
