@@ -197,8 +197,9 @@ void CellList::countingSort() {
     // Stable counting sort: particles keep their relative order inside a cell, so the layout (and
     // with it the summation order of forces) is a function of the state alone. In parallel without
     // per-thread counts: each thread owns a range of keys (of the key windows: all keys, or a rank's
-    // planes), reads every key, and counts and places only its own, in particle order. The keys are read once per thread (4 bytes a particle, streamed);
-    // counts and places are written once. The result does not depend on the number of threads.
+    // planes), reads every key, and counts and places only its own, in particle order. The keys are
+    // read once per thread (4 bytes a particle, streamed); counts and places are written once. The
+    // result does not depend on the number of threads.
     const std::uint32_t n = static_cast<std::uint32_t>(keyOf_.size());
     const std::uint32_t nKeys = static_cast<std::uint32_t>(start_.size() - 1);
     const std::uint32_t* key = keyOf_.data();

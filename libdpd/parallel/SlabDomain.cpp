@@ -138,8 +138,7 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
                 i += kBlock - 1;
                 continue;
             }
-            const double x = rx[i];
-            const int plane = x >= inner.xLo && x < inner.xHi ? cells.axisCell(x, 0) : planeOf(cells, x);  // the wrap only where it acts
+            const int plane = planeOf(cells, rx[i]);
             if (plane >= lo && plane < hi) {
                 if (plane == lo) firstPlaneOwn_.push_back(i);
                 if (plane == hi - 1) lastPlaneOwn_.push_back(i);
@@ -270,21 +269,20 @@ void SlabDomain::refreshGhostForces(Particles& p, const CellList& cells) const {
     std::vector<std::size_t> counts;
     std::vector<char>& received = receiveBuffer_;
     comm_->exchange(send, sendBytes, received, counts);
+    const std::size_t ghosts = lowerGhosts.second - lowerGhosts.first + upperGhosts.second - upperGhosts.first;
+    if (received.size() != ghosts * perParticle)
+        throw std::logic_error("SlabDomain::refreshGhostForces: the neighbours' planes and the ghosts differ in number");
     // From `above` its first plane (our upper ghosts), from `below` its last (our lower ghosts).
     const char* at = received.data();
-    const char* const end = received.data() + received.size();
     const auto take = [&](std::pair<std::size_t, std::size_t> r) {
         const std::size_t bytes = (r.second - r.first) * sizeof(double);
         for (auto* f : {&p.fx, &p.fy, &p.fz}) {
-            if (static_cast<std::size_t>(end - at) < bytes) break;  // reported below
             std::memcpy(f->data() + r.first, at, bytes);
             at += bytes;
         }
     };
     if (below < above) { take(lowerGhosts); take(upperGhosts); }
     else { take(upperGhosts); take(lowerGhosts); }
-    if (at != end)
-        throw std::logic_error("SlabDomain::refreshGhostForces: the neighbours' planes and the ghosts differ in number");
 }
 
 std::size_t SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
