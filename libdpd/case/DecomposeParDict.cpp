@@ -26,16 +26,11 @@ DecomposeSettings readDecomposeParDict(const std::string& caseDir, int ranks) {
         s.planes = s.dict.get<std::vector<int>>("planes");
         if (static_cast<int>(s.planes.size()) != ranks)
             s.dict.fail("planes", std::to_string(s.planes.size()) + " entries for " + std::to_string(ranks) + " ranks");
-        for (int n : s.planes)
-            if (n < SlabDecomposition::minPlanes(ranks))
-                s.dict.fail("planes", "each of " + std::to_string(ranks) + " ranks needs at least " +
-                                          std::to_string(SlabDecomposition::minPlanes(ranks)) + " planes (the ghost planes on " +
-                                          "either side of a rank are its neighbours')");
     }
     return s;
 }
 
-void checkPlanesFitBox(const DecomposeSettings& s, const Box& box, double cutoff) {
+void checkPlanesFitBox(const DecomposeSettings& s, const Box& box, double cutoff, double ghostReach) {
     if (s.planes.empty()) return;
     CellList grid;
     grid.setup(box, cutoff);
@@ -44,6 +39,15 @@ void checkPlanesFitBox(const DecomposeSettings& s, const Box& box, double cutoff
     if (total != planes)
         s.dict.fail("planes", "they add up to " + std::to_string(total) + ", but the box has " + std::to_string(planes) +
                                   " planes of cells along x");
+    const int ranks = static_cast<int>(s.planes.size());
+    const int ghosts = SlabDecomposition::ghostPlanesFor(ghostReach, grid.cellSize().x());
+    const int least = SlabDecomposition::minPlanes(ranks, ghosts);
+    for (int n : s.planes)
+        if (n < least)
+            s.dict.fail("planes", "each of " + std::to_string(ranks) + " ranks needs at least " + std::to_string(least) +
+                                      " planes (the " + std::to_string(ghosts) + " ghost plane" + (ghosts > 1 ? "s" : "") +
+                                      " on either side of a rank are its neighbours'" +
+                                      (ghosts > 1 ? ", as many as a bond reaches" : "") + ")");
 }
 
 }  // namespace dpd

@@ -24,7 +24,8 @@ struct DecomposeSettings {
 // Reads <caseDir>/system/decomposeParDict if there is one; an InputError (file, line, keyword) for a
 // subdomain count other than `ranks`, an unknown method or key, or a plane list of the wrong length.
 DecomposeSettings readDecomposeParDict(const std::string& caseDir, int ranks);
-// The per-rank planes checked against the box: they must add up to its planes along x.
-void checkPlanesFitBox(const DecomposeSettings& s, const Box& box, double cutoff);
+// The per-rank planes checked against the box: they must add up to its planes along x, and each
+// rank's hold the ghost planes its neighbours take from it (as many as reach `ghostReach`).
+void checkPlanesFitBox(const DecomposeSettings& s, const Box& box, double cutoff, double ghostReach);
 
 }  // namespace dpd

@@ -29,11 +29,15 @@ void correct(const ChainBonds& chains, const TakenBack& back, const BondedPairSc
     const Eigen::Vector3d length = box.length();
     const bool threeD = box.dimension == 3;
     const Bonds& b = chains.bonds();
+    const bool partOnly = chains.holdsPartOnly();
     const long nChains = static_cast<long>(chains.chainCount());
 #pragma omp parallel for schedule(static)
     for (long c = 0; c < nChains; ++c)
         for (std::size_t k = chains.chainBegin(c); k < chains.chainEnd(c); ++k) {
             const std::uint32_t i = chains.indexOf(b.first[k]), j = chains.indexOf(b.second[k]);
+            // A rank of a decomposed run takes its own particles' bonds; one whose other particle it
+            // does not hold is longer than the cutoff (and the bond pass stops the run).
+            if (partOnly && chains.here(k, i, j, p) != ChainBonds::Here::Evaluate) continue;
             const double dx = minimumImage(p.rx[i] - p.rx[j], length.x());
             const double dy = threeD ? minimumImage(p.ry[i] - p.ry[j], length.y()) : 0.0;
             const double dz = minimumImage(p.rz[i] - p.rz[j], length.z());

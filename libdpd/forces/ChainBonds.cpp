@@ -30,6 +30,21 @@ ChainBonds::ChainBonds(Bonds bonds) {
     if (!bonds_.empty()) chainStart_.push_back(bonds_.size());
 }
 
+void ChainBonds::holdPartOnly() {
+    if (bonds_.empty()) return;
+    if (indexOfId_.empty()) throw std::logic_error("ChainBonds::holdPartOnly before the first locate");
+    partOnly_ = true;
+    // The bonds of each id, in bond order (a counting sort by id).
+    bondsOfIdStart_.assign(indexOfId_.size() + 1, 0);
+    for (std::size_t k = 0; k < bonds_.size(); ++k)
+        for (std::uint64_t id : {bonds_.first[k], bonds_.second[k]}) ++bondsOfIdStart_[id + 1];
+    for (std::size_t id = 0; id + 1 < bondsOfIdStart_.size(); ++id) bondsOfIdStart_[id + 1] += bondsOfIdStart_[id];
+    bondsOfId_.assign(bondsOfIdStart_.back(), 0);
+    std::vector<std::uint32_t> fill(bondsOfIdStart_.begin(), bondsOfIdStart_.end() - 1);
+    for (std::size_t k = 0; k < bonds_.size(); ++k)
+        for (std::uint64_t id : {bonds_.first[k], bonds_.second[k]}) bondsOfId_[fill[id]++] = static_cast<std::uint32_t>(k);
+}
+
 void ChainBonds::locate(const Particles& p) {
     if (bonds_.empty()) return;
     const std::size_t n = p.size();

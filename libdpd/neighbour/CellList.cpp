@@ -68,8 +68,10 @@ void CellList::setup(const Box& box, double cutoff) {
     setKeyWindows();
 }
 
-void CellList::setHomePlanes(std::vector<std::uint8_t> home) {
+void CellList::setHomePlanes(std::vector<std::uint8_t> home, int ghostPlanes) {
+    if (ghostPlanes < 1) throw std::invalid_argument("CellList::setHomePlanes: at least one ghost plane");
     homePlanes_ = std::move(home);
+    ghostPlanes_ = ghostPlanes;
     setKeyWindows();
 }
 
@@ -80,14 +82,20 @@ void CellList::setKeyWindows() {
         keyWindows_.emplace_back(0, nKeys);
         return;
     }
-    // A plane is keyed if a home plane lies within two planes below it or one above: the pair loop
-    // reads its home planes and the next (the half stencil goes up along x), a slab's neighbours
-    // read the plane after their ghosts'.
+    // A plane is keyed if a home plane lies within ghostPlanes + 1 planes below it or ghostPlanes
+    // above: the home planes (the slab and the one before it) and the ghost planes after the slab
+    // and before that plane hold the particles, and the plane after the last is read for where the
+    // last one ends; one more plane below is keyed with them.
     const int nx = n_[0];
     const auto home = [&](int ix) { return isHomePlane(((ix % nx) + nx) % nx); };
+    const auto nearHome = [&](int ix) {
+        for (int d = -ghostPlanes_ - 1; d <= ghostPlanes_; ++d)
+            if (home(ix + d)) return true;
+        return false;
+    };
     const auto keysPerPlane = static_cast<std::uint32_t>(2 * n_[1] * n_[2]);
     for (int ix = 0; ix < nx; ++ix) {
-        if (!(home(ix - 2) || home(ix - 1) || home(ix) || home(ix + 1))) continue;
+        if (!nearHome(ix)) continue;
         const std::uint32_t first = static_cast<std::uint32_t>(ix) * keysPerPlane;
         if (!keyWindows_.empty() && keyWindows_.back().second == first) keyWindows_.back().second = first + keysPerPlane;
         else keyWindows_.emplace_back(first, first + keysPerPlane);

@@ -71,11 +71,12 @@ public:
     const Box& box() const { return box_; }
     const Eigen::Vector3d& cellSize() const { return size_; }
     // The planes of cells (constant x index) whose cells a pair loop visits as home cells: all of them
-    // (the default), or, for one rank of a decomposed run, its own and the one before (parallel/SlabDomain).
-    // The sort then counts only the keys of the planes that can hold particles or be read (home
-    // planes, the planes next to them, and one more on either side), not the whole box's grid: the
-    // other planes' cell starts are left as they were, and are not read.
-    void setHomePlanes(std::vector<std::uint8_t> home);
+    // (the default), or, for one rank of a decomposed run, its own and the one before (parallel/SlabDomain),
+    // its particles lying in them and in ghostPlanes planes on either side of its own. The sort then
+    // counts only the keys of the planes that can hold particles or be read (those, and one more on
+    // either side), not the whole box's grid: the other planes' cell starts are left as they were,
+    // and are not read.
+    void setHomePlanes(std::vector<std::uint8_t> home, int ghostPlanes = 1);
     bool isHomePlane(int ix) const { return homePlanes_.empty() || homePlanes_[static_cast<std::size_t>(ix)] != 0; }
     // Bytes held (capacities of the cell starts, the sort keys and order, and the sort's scratch).
     std::size_t memoryBytes() const;
@@ -96,6 +97,7 @@ private:
     std::vector<std::uint32_t> start_;
     std::vector<std::uint8_t> frozenOfSpecies_;
     std::vector<std::uint8_t> homePlanes_;  // empty: every plane
+    int ghostPlanes_ = 1;
     // The sort's keys in ascending ranges [first, second), the discarded particles' key the last:
     // every key, or (with home planes) those of the planes near them.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> keyWindows_;

@@ -103,10 +103,15 @@ void Communicator::sum([[maybe_unused]] long* values, std::size_t n) const {
 }
 
 double Communicator::max(double value) const {
-#ifdef DPD_HAVE_MPI
-    if (size_ > 1) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-#endif
+    max(&value, 1);
     return value;
+}
+
+void Communicator::max([[maybe_unused]] double* values, std::size_t n) const {
+    if (size_ == 1 || n == 0) return;
+#ifdef DPD_HAVE_MPI
+    MPI_Allreduce(MPI_IN_PLACE, values, byteCount(n), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+#endif
 }
 
 bool Communicator::all(bool value) const {

@@ -31,8 +31,9 @@ public:
     void sum(long* values, std::size_t n) const;
     long sum(long value) const { sum(&value, 1); return value; }
     double sum(double value) const { sum(&value, 1); return value; }
-    // The largest value over the ranks, on every rank.
+    // The largest value over the ranks, on every rank (element-wise, in place, for an array).
     double max(double value) const;
+    void max(double* values, std::size_t n) const;
     // Whether the value holds on every rank (a logical and).
     bool all(bool value) const;
     // The root's bytes on every rank.

@@ -2,6 +2,7 @@
 
 #include "parallel/ParticleColumns.hpp"
 #include "parallel/ParticleRecord.hpp"
+#include "parallel/RankChains.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -48,9 +49,10 @@ void removeIndices(Particles& p, const std::vector<std::size_t>& gone) {
     removeIndices(p.species, gone);
 }
 
-// What goes to one rank in a migration: a count of particles and of deferred crossings, then both.
+// What goes to one rank in a migration: counts of particles, of deferred crossings and of bond
+// vectors, then the three.
 struct MigrationHeader {
-    std::uint64_t particles = 0, deferred = 0;
+    std::uint64_t particles = 0, deferred = 0, bondVectors = 0;
 };
 
 constexpr std::uint32_t kBlock = 8;
@@ -90,16 +92,33 @@ struct InnerPlanes {
 // The plane a particle's sort will put it in (the sort wraps the position, so the same wrap here).
 int planeOf(const CellList& cells, double x) { return cells.axisCell(cells.box().wrap(x, 0), 0); }
 
+// Which of a slab's particles (planes [lo, hi)) its neighbours take as ghosts: all of the plane at
+// either face (the pair loop's), and in the planes behind it, as far as a bond reaches, only those of
+// the species that reach that far (the chains' beads, for the bond pass).
+struct GhostSource {
+    int lo, hi, planes;
+    const std::uint8_t* farSpecies;
+    bool below(int plane, std::uint8_t species) const { return plane == lo || (plane < lo + planes && farSpecies[species]); }
+    bool above(int plane, std::uint8_t species) const { return plane == hi - 1 || (plane >= hi - planes && farSpecies[species]); }
+};
+
 }  // namespace
 
-SlabDomain::SlabDomain(const Communicator& comm, SlabDecomposition slabs) : comm_(&comm), slabs_(std::move(slabs)) {}
+SlabDomain::SlabDomain(const Communicator& comm, SlabDecomposition slabs)
+    : comm_(&comm), slabs_(std::move(slabs)), farGhostSpecies_(256, 0) {}
+
+void SlabDomain::setFarGhostSpecies(const std::vector<std::uint8_t>& species) {
+    farGhostSpecies_.assign(256, 0);
+    std::copy(species.begin(), species.begin() + static_cast<long>(std::min<std::size_t>(species.size(), 256)),
+              farGhostSpecies_.begin());
+}
 
 std::shared_ptr<SlabDomain> SlabDomain::balanced(const Communicator& comm, const CellList& cells, const Particles& p,
-                                                 const std::vector<std::uint8_t>& frozenOfSpecies) {
+                                                 const std::vector<std::uint8_t>& frozenOfSpecies, int ghostPlanes) {
     std::vector<double> weights(static_cast<std::size_t>(cells.cellsPerAxis()[0]), 0.0);
     for (std::size_t i = 0; i < p.size(); ++i)
         weights[planeOf(cells, p.rx[i])] += frozenOfSpecies[p.species[i]] ? SlabDecomposition::kFrozenWeight : 1.0;
-    return std::make_shared<SlabDomain>(comm, SlabDecomposition::balanced(weights, comm.size()));
+    return std::make_shared<SlabDomain>(comm, SlabDecomposition::balanced(weights, comm.size(), ghostPlanes));
 }
 
 std::vector<std::uint8_t> SlabDomain::homePlanes() const {
@@ -120,17 +139,20 @@ void SlabDomain::keepOwned(Particles& p, const CellList& cells) const {
 }
 
 void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells, std::vector<DeferredCrossing>& deferred,
-                         Particles& fromLower, std::vector<std::uint32_t>& leavers) const {
+                         ChainBonds* bonds, Particles& fromLower, std::vector<std::uint32_t>& leavers) const {
     const int ranks = comm_->size(), me = comm_->rank();
     const int lo = firstPlane(), hi = endPlane();
-    std::vector<std::vector<char>> records(ranks), crossings(ranks);
+    std::vector<std::vector<char>> records(ranks), crossings(ranks), bondVectors(ranks);
     std::vector<MigrationHeader> headers(ranks);
     std::vector<std::uint8_t> deferredLeaves(deferred.size(), 0);
     leavers.clear();
     firstPlaneOwn_.clear();
     lastPlaneOwn_.clear();
     const double* rx = p.rx.data();
-    const InnerPlanes inner{cells.box().lo.x(), cells.box().hi.x(), 1.0 / cells.cellSize().x(), lo, hi};
+    // The planes this rank's neighbours take ghosts from: the first and the last `ghosts` of the slab.
+    const int ghosts = slabs_.ghostPlanes();
+    const GhostSource source{lo, hi, ghosts, farGhostSpecies_.data()};
+    const InnerPlanes inner{cells.box().lo.x(), cells.box().hi.x(), 1.0 / cells.cellSize().x(), lo + ghosts - 1, hi - ghosts + 1};
     for (const auto& [first, end] : own)
         for (std::uint32_t i = first; i < end; ++i) {
             // Blocks in the slab's inner planes, most of them, neither leave nor serve as ghosts.
@@ -140,14 +162,15 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
             }
             const int plane = planeOf(cells, rx[i]);
             if (plane >= lo && plane < hi) {
-                if (plane == lo) firstPlaneOwn_.push_back(i);
-                if (plane == hi - 1) lastPlaneOwn_.push_back(i);
+                if (source.below(plane, p.species[i])) firstPlaneOwn_.push_back(i);
+                if (source.above(plane, p.species[i])) lastPlaneOwn_.push_back(i);
                 continue;
             }
             const int to = slabs_.ownerOf(plane);
             leavers.push_back(i);
             appendRecord(p, i, records[to]);
             ++headers[to].particles;
+            if (bonds) appendBondVectors(*bonds, p.id[i], bondVectors[to], headers[to].bondVectors);
             const auto d = std::lower_bound(deferred.begin(), deferred.end(), p.id[i],
                                             [](const DeferredCrossing& c, std::uint64_t id) { return c.id < id; });
             if (d != deferred.end() && d->id == p.id[i]) {
@@ -158,7 +181,7 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
                 ++headers[to].deferred;
             }
         }
-    // Each rank's part in one buffer, in rank order: header, particles, crossings.
+    // Each rank's part in one buffer, in rank order: header, particles, crossings, bond vectors.
     std::vector<char> send;
     std::vector<std::size_t> sendBytes(ranks);
     for (int r = 0; r < ranks; ++r) {
@@ -166,7 +189,8 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
         send.insert(send.end(), h, h + sizeof(MigrationHeader));
         send.insert(send.end(), records[r].begin(), records[r].end());
         send.insert(send.end(), crossings[r].begin(), crossings[r].end());
-        sendBytes[r] = sizeof(MigrationHeader) + records[r].size() + crossings[r].size();
+        send.insert(send.end(), bondVectors[r].begin(), bondVectors[r].end());
+        sendBytes[r] = sizeof(MigrationHeader) + records[r].size() + crossings[r].size() + bondVectors[r].size();
     }
     std::vector<char> received;
     std::vector<std::size_t> counts;
@@ -190,6 +214,8 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
             std::memcpy(&d, at, sizeof d);
             deferred.push_back(d);
         }
+        if (h.bondVectors > 0 && !bonds) throw std::logic_error("SlabDomain::migrate: bond vectors came to a run without bonds");
+        if (bonds) takeBondVectors(at, h.bondVectors, *bonds);
         at = next;
     }
     std::sort(deferred.begin(), deferred.end(), [](const DeferredCrossing& a, const DeferredCrossing& b) { return a.id < b.id; });
@@ -206,10 +232,11 @@ void SlabDomain::addGhosts(const Particles& fromLower, Particles& p, const Range
     ParticleRefs& lastPlane = lastPlaneRefs_;
     firstPlane.clear();
     lastPlane.clear();
+    const GhostSource source{lo, hi, slabs_.ghostPlanes(), farGhostSpecies_.data()};
     const auto sortIn = [&](const Particles& q, std::uint32_t i) {
         const int plane = planeOf(cells, q.rx[i]);
-        if (plane == lo) firstPlane.emplace_back(&q, i);
-        if (plane == hi - 1) lastPlane.emplace_back(&q, i);
+        if (source.below(plane, q.species[i])) firstPlane.emplace_back(&q, i);
+        if (source.above(plane, q.species[i])) lastPlane.emplace_back(&q, i);
     };
     for (std::uint32_t i = 0; i < fromLower.size(); ++i) sortIn(fromLower, i);
     for (const std::uint32_t i : firstPlaneOwn_) firstPlane.emplace_back(&p, i);
@@ -285,10 +312,15 @@ void SlabDomain::refreshGhostForces(Particles& p, const CellList& cells) const {
     else { take(upperGhosts); take(lowerGhosts); }
 }
 
-std::size_t SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
+std::pair<std::size_t, std::size_t> SlabDomain::ownRange(const CellList& cells) const {
     const int hi = endPlane();
     const std::size_t begin = cells.cellStart(cells.cellIndex(firstPlane(), 0, 0));
     const std::size_t end = hi == slabs_.planes() ? cells.sortedCount() : cells.cellStart(cells.cellIndex(hi, 0, 0));
+    return {begin, end};
+}
+
+std::size_t SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
+    const auto [begin, end] = ownRange(cells);
     const std::size_t own = end - begin;
     if (begin == 0 || begin > own) {
         keepRange(p, begin, end);
@@ -303,6 +335,24 @@ std::size_t SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
     fill(p.id);
     fill(p.species);
     return begin;
+}
+
+Particles SlabDomain::withPlaneAbove(const Particles& own, const CellList& cells) const {
+    const int n = slabs_.planes(), lo = firstPlane();
+    ParticleRefs firstPlane;
+    for (std::uint32_t i = 0; i < own.size(); ++i)
+        if (planeOf(cells, own.rx[i]) == lo) firstPlane.emplace_back(&own, i);
+    std::vector<char> send(columnBytes(firstPlane.size()));
+    writeColumns(firstPlane, send.data());
+    std::vector<std::size_t> sendBytes(static_cast<std::size_t>(comm_->size()), 0);
+    sendBytes[static_cast<std::size_t>(slabs_.ownerOf((lo - 1 + n) % n))] = send.size();
+    std::vector<char> received;
+    std::vector<std::size_t> counts;
+    comm_->exchange(send, sendBytes, received, counts);
+    Particles local = own;
+    const char* end = received.data() + received.size();
+    for (const char* at = received.data(); at != end;) at = appendColumns(at, local);
+    return local;
 }
 
 Particles SlabDomain::gather(const Particles& p) const { return gatherParticles(p, false); }

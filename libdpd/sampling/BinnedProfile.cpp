@@ -66,7 +66,7 @@ void BinnedProfile::execute(const System& sys) {
     if (sys.time < startTime_ - 1e-9 * sys.dt()) return;
     if (sys.step % sampleInterval_ != 0) return;
     accumulator_.sample(sys.particles);
-    if (accumulator_.stressFlowAxis() >= 0) accumulator_.addVirial(binnedPairVirial(sys, accumulator_.layout()));
+    if (accumulator_.stressFlowAxis() >= 0) accumulator_.addVirial(binnedPairVirial(sys, accumulator_.layout(), virialWork_));
 }
 
 void BinnedProfile::write(const std::string& timeDir, const System& sys) const {

@@ -24,6 +24,7 @@
 // At every write time the sums go to <time>/sampling/<name>.h5 (see BinAccumulatorFile.hpp), which
 // profileBins turns into profiles.
 #include "sampling/BinAccumulator.hpp"
+#include "sampling/PairVirial.hpp"
 #include "sampling/FunctionObject.hpp"
 
 #include <vector>
@@ -40,14 +41,16 @@ public:
     void execute(const System& sys) override;
     void write(const std::string& timeDir, const System& sys) const override;
     void restore(const std::string& timeDir) override;
-    // Stress sampling needs every pair of the bins (the ghosts' too): one rank only.
-    bool runsOnSeveralRanks() const override { return accumulator_.stressFlowAxis() < 0; }
+    // Each rank samples its own particles (with the stress, the pairs of its own planes:
+    // sampling/PairVirial.hpp); the sums are added over the ranks.
+    bool runsOnSeveralRanks() const override { return true; }
     void sumOverRanks(const Communicator& comm) override;
     void keepRestoredSums(bool keep) override;
 
 private:
     std::string name_;
     BinAccumulator accumulator_;
+    PairVirialWork virialWork_;  // a decomposed run's stress traversal, kept between samples
     double startTime_ = 0.0;
     long sampleInterval_ = 1;
     double crossSection_ = 1.0;

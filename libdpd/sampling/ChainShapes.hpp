@@ -8,6 +8,7 @@
 #include "forces/ChainBonds.hpp"
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 namespace dpd {
@@ -24,5 +25,10 @@ struct ChainShape {
 // One shape per chain, in chain order. std::invalid_argument for a chain whose bonds are not in
 // order head to tail.
 std::vector<ChainShape> chainShapes(const ChainBonds& bonds, const Particles& p, const Box& box);
+// The same given the position of each chain's head (the first particle of its first bond), in chain
+// order: for a decomposed run, whose heads lie on several ranks.
+std::vector<ChainShape> chainShapes(const ChainBonds& bonds, const std::vector<Eigen::Vector3d>& heads, const Box& box);
+// The ids of the chains' heads, in chain order.
+std::vector<std::uint64_t> chainHeadIds(const ChainBonds& bonds);
 
 }  // namespace dpd

@@ -6,6 +6,7 @@
 #include "io/Dictionary.hpp"
 #include "io/Hdf5File.hpp"
 #include "io/TimeDirectories.hpp"
+#include "parallel/RankChains.hpp"
 #include "sampling/ChainShapes.hpp"
 #include "system/System.hpp"
 
@@ -60,7 +61,18 @@ std::unique_ptr<FunctionObject> ChainStatistics::New(const Dictionary& d, const 
 void ChainStatistics::execute(const System& sys) {
     if (sys.time < startTime_ - 1e-9 * sys.dt()) return;
     if (sys.step % sampleInterval_ != 0) return;
-    const std::vector<ChainShape> shapes = chainShapes(sys.bonds, sys.particles, sys.box);
+    std::vector<ChainShape> shapes;
+    if (const SlabDomain* domain = sys.domain()) {
+        // The chains lie on several ranks: their bond vectors and heads are gathered on the first,
+        // which samples them all (the others hold no samples).
+        const Communicator& comm = domain->communicator();
+        Bonds whole = bondsOnRoot(comm, sys.bonds.bonds(), sys.particles);
+        const std::vector<Eigen::Vector3d> heads = positionsOnRoot(comm, chainHeadIds(sys.bonds), sys.particles);
+        if (!comm.isRoot()) return;
+        shapes = chainShapes(ChainBonds(std::move(whole)), heads, sys.box);
+    } else {
+        shapes = chainShapes(sys.bonds, sys.particles, sys.box);
+    }
     ChainSample s;
     s.time = sys.time;
     const double n = static_cast<double>(shapes.size());

@@ -49,6 +49,10 @@ public:
     void write(const std::string& timeDir, const System& sys) const override;
     void restore(const std::string& timeDir) override;
 
+    // In a decomposed run the first rank samples every chain (gathered there) and the others none:
+    // nothing to add over the ranks.
+    bool runsOnSeveralRanks() const override { return true; }
+
     const std::vector<ChainSample>& samples() const { return samples_; }
 
 private:

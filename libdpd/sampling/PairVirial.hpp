@@ -20,7 +20,12 @@
 //
 // Every interacting pair counts (fluid-wall pairs carry the wall's stress into the fluid), whatever
 // species the profile bins for its other fields. Deterministic on any number of threads: each slab
-// of cells sums into its own array, and the slabs are added in order.
+// of cells sums into its own array, and the slabs are added in order. In a decomposed run each rank
+// traverses the pairs of its own planes, with a copy of the next rank's first plane (the half stencil
+// goes up along x), and the bonds whose first particle it owns: every pair and bond once over the
+// ranks, whose sums the profile adds (equal to one process's to rounding).
+#include "core/Particles.hpp"
+#include "neighbour/CellList.hpp"
 #include "sampling/BinAccumulator.hpp"
 
 #include <vector>
@@ -29,9 +34,17 @@ namespace dpd {
 
 class System;
 
+// What a decomposed run's traversal builds at each sample, kept by the sampler so that a sample
+// allocates nothing new: the rank's particles with the next rank's first plane, their cell list.
+struct PairVirialWork {
+    Particles local;
+    CellList cells;
+};
+
 // The virial sums per bin (nBins tensors xx yy zz xy xz yz) at the system's current state. The
 // particles must be sorted by the system's cell list (as they are after a step).
 std::vector<SymmetricTensor> binnedPairVirial(const System& sys, const BinLayout& layout);
+std::vector<SymmetricTensor> binnedPairVirial(const System& sys, const BinLayout& layout, PairVirialWork& work);
 
 // The Irving-Kirkwood share of a segment from coordinate a to b (any order, |b - a| < box length)
 // that falls in each bin, added to `share` (nBins), weighted by `weight`; the segment may cross the

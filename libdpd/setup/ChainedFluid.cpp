@@ -21,7 +21,9 @@ Snapshot snapshotOf(const System& sys) {
 }  // namespace
 
 System makeChainedFluid(const ChainedFluidSettings& settings) {
-    const System fluid = makeStandardFluid(settings.fluid);
+    StandardFluidSettings whole = settings.fluid;
+    whole.ranks = nullptr;  // chains are put in the whole box; initialise keeps each rank's slab of it
+    const System fluid = makeStandardFluid(whole);
     Snapshot s = snapshotOf(fluid);
     const auto fene = std::make_shared<FeneBond>(6.0, 3.0);
     ChainSettings chains;
@@ -46,6 +48,7 @@ System makeChainedFluid(const ChainedFluidSettings& settings) {
     sys.bonds = ChainBonds(s.bonds);
     sys.bondPotential = fene;
     sys.bondedPairs = settings.bondedPairs;
+    sys.ranks = settings.fluid.ranks;
     sys.initialise();
     sys.sortByCell();
     sys.computeForces();

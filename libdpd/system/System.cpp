@@ -2,7 +2,9 @@
 
 #include "forces/BondedPairCorrection.hpp"
 #include "forces/PairForceLoop.hpp"
+#include "parallel/RankChains.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -61,6 +63,8 @@ void System::initialise() {
     pairs = table;
     random_ = PairRandom(seed);
     cells_.setup(box, forceParameters.cutoff);
+    if (!bonds.empty() && !bondPotential) throw std::invalid_argument("bonds without a bond potential");
+    bonds.locate(particles);  // every particle is here, in a decomposed run too (before decompose)
     if (ranks && ranks->parallel()) decompose();
     conservative_ = pairs.anyConservative();
     wallForces_ = walls.anyActsWithForces();
@@ -73,27 +77,39 @@ void System::initialise() {
         }
     frozenPerWall_ = walls.assignFrozenVelocities(particles, frozenOfSpecies_);
     if (domain_) domain_->communicator().sum(frozenPerWall_.data(), frozenPerWall_.size());
-    if (!bonds.empty() && !bondPotential) throw std::invalid_argument("bonds without a bond potential");
-    bonds.locate(particles);
     wrapPositions();
     walls.recordPositions(particles, frozenOfSpecies_);
     initialised_ = true;
 }
 
+double ghostReachFor(double cutoff, const BondPotential* bonds) {
+    return bonds ? std::max(cutoff, bonds->maxLength()) : cutoff;
+}
+
+double System::ghostReach() const {
+    return ghostReachFor(forceParameters.cutoff, bonds.empty() ? nullptr : bondPotential.get());
+}
+
 void System::decompose() {
-    if (!bonds.empty()) throw std::invalid_argument("polymer chains cannot run on several ranks yet (run them on one)");
-    if (bondedPairsCorrected()) throw std::invalid_argument("bonded pairs cannot run on several ranks yet");
+    // Ghost planes reach as far as a pair force, and with chains as far as a bond: each rank's bond
+    // pass finds the other bead of its own beads' bonds among its ghosts.
+    const int ghostPlanes = SlabDecomposition::ghostPlanesFor(ghostReach(), cells_.cellSize().x());
+    std::shared_ptr<SlabDomain> domain;
     if (slabPlanes.empty()) {
-        domain_ = SlabDomain::balanced(*ranks, cells_, particles, frozenOfSpecies_);
+        domain = SlabDomain::balanced(*ranks, cells_, particles, frozenOfSpecies_, ghostPlanes);
     } else {
         std::vector<int> cuts{0};
         for (int n : slabPlanes) cuts.push_back(cuts.back() + n);
         if (cuts.back() != cells_.cellsPerAxis()[0] || static_cast<int>(slabPlanes.size()) != ranks->size())
             throw std::invalid_argument("slab planes per rank do not fit the ranks and the box's planes");
-        domain_ = std::make_shared<SlabDomain>(*ranks, SlabDecomposition::fromCuts(cuts));
+        domain = std::make_shared<SlabDomain>(*ranks, SlabDecomposition::fromCuts(cuts, ghostPlanes));
     }
+    // Beyond the plane at the face only the beads are needed, by the bond pass (no solvent there).
+    domain->setFarGhostSpecies(bonds.bondedSpecies());
+    domain_ = std::move(domain);
     domain_->keepOwned(particles, cells_);
-    cells_.setHomePlanes(domain_->homePlanes());
+    cells_.setHomePlanes(domain_->homePlanes(), ghostPlanes);
+    bonds.holdPartOnly();
 }
 
 void System::wrapPositions() {
@@ -117,8 +133,16 @@ void System::sortByCell(SortForces forces) {
     // The particles that left are past the last cell: gone. Forces left behind keep their length
     // until the pair loop has read them.
     if (domain_) particles.shorten(cells_.sortedCount(), forces == SortForces::Leave);
-    if (!bonds.empty()) bonds.locate(particles);
+    if (!bonds.empty()) {
+        bonds.locate(particles);
+        if (domain_) {
+            const auto [first, end] = domain_->ownRange(cells_);
+            bonds.setOwned(first, end);
+        }
+    }
     forcesLeftBySort_ = forces == SortForces::Leave;
+    cellsFitPositions_ = true;
+    movedAfterSort_.clear();
 }
 
 void System::exchangeWithNeighbours() {
@@ -131,7 +155,7 @@ void System::exchangeWithNeighbours() {
     std::vector<std::uint32_t> leavers;
     {
         const ScopedTimer timer(stepTimes ? &stepTimes->migrate : nullptr);
-        domain_->migrate(particles, own, cells_, deferredCrossings_, fromLower, leavers);
+        domain_->migrate(particles, own, cells_, deferredCrossings_, bonds.empty() ? nullptr : &bonds, fromLower, leavers);
     }
     const ScopedTimer timer(stepTimes ? &stepTimes->ghosts : nullptr);
     const auto withHigher = static_cast<std::uint32_t>(particles.size());
@@ -179,6 +203,7 @@ void System::computeForces(double predictorShift) {
 void System::addBondForces() {
     if (bonds.empty()) return;
     bondPass_ = bondPotential->addForces(bonds, particles, box);
+    if (domain_) bondPass_ = agreedOverRanks(domain_->communicator(), bondPass_);  // every rank stops together
 }
 
 WallStep System::wallStep() {
@@ -195,6 +220,7 @@ WallCounters System::applyWalls() {
 
 void System::completeWalls() {
     dropGhosts();
+    for (const DeferredCrossing& d : deferredCrossings_) movedAfterSort_.push_back(d.id);  // kept sorted by id
     walls.completeStep(particles, frozenOfSpecies_, box, deferredCrossings_);
 }
 
@@ -207,6 +233,7 @@ void System::dropGhosts() {
     if (forcesLeftBySort_) throw std::logic_error("System::dropGhosts: the forces the last sort left behind were never computed");
     rotation_ = domain_->dropGhosts(particles, cells_);
     ghostsHeld_ = false;
+    cellsFitPositions_ = false;
 }
 
 std::size_t System::countMobile() const {

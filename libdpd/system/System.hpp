@@ -32,6 +32,10 @@ struct StepTimes {
     double ghosts = 0.0;  // and the neighbours' planes taken in as ghosts (in sortByCell)
 };
 
+// How far from its slab a decomposed run's rank needs ghosts: the cutoff, or with bonds (a potential
+// given) the longest bond when that is longer.
+double ghostReachFor(double cutoff, const BondPotential* bonds);
+
 class System {
 public:
     Box box;
@@ -64,11 +68,18 @@ public:
     // How many frozen particles each wall owns (moves with its velocity), as set by initialise().
     const std::vector<long>& frozenPerWall() const { return frozenPerWall_; }
     const CellList& cells() const { return cells_; }
+    // Whether the particles are stored as the last sort put them in cells (not once a decomposed run
+    // dropped its ghosts); those whose crossings completed at the end of the step have moved since
+    // (their ids, increasing: movedAfterSort).
+    bool cellsFitPositions() const { return cellsFitPositions_; }
+    const std::vector<std::uint64_t>& movedAfterSort() const { return movedAfterSort_; }
     // This rank's slab of a decomposed run; null when one rank runs the whole box.
     const SlabDomain* domain() const { return domain_.get(); }
     // The ranks' sums of a count (the count itself on one rank).
     long sumOverRanks(long n) const { return domain_ ? domain_->communicator().sum(n) : n; }
     bool usesConservativeForce() const { return conservative_; }
+    // How far from its slab a decomposed run's rank needs ghosts (ghostReachFor).
+    double ghostReach() const;
     double dt() const { return forceParameters.dt; }
 
     // Brings every position back into the box.
@@ -144,6 +155,8 @@ private:
     bool wallForces_ = false;  // some wall acts on the fluid with forces
     bool initialised_ = false;
     bool forcesLeftBySort_ = false;  // the last sort left the forces behind (SortForces::Leave)
+    bool cellsFitPositions_ = false;
+    std::vector<std::uint64_t> movedAfterSort_;
 };
 
 }  // namespace dpd

@@ -9,6 +9,7 @@
 #include "case/DecomposeParDict.hpp"
 #include "case/DpdProperties.hpp"
 #include "parallel/Communicator.hpp"
+#include "parallel/RankChains.hpp"
 #include "system/Monitors.hpp"
 #include "system/System.hpp"
 #include "core/ThreadBudget.hpp"
@@ -91,6 +92,7 @@ const Snapshot& wholeSnapshot(const System& sys, const Snapshot& part, Snapshot&
     if (!sys.domain()) return part;
     gathered = part;
     gathered.particles = sys.domain()->gather(part.particles);
+    gathered.bonds = bondsOnRoot(sys.domain()->communicator(), part.bonds, part.particles);
     return gathered;
 }
 
@@ -158,7 +160,8 @@ public:
         const Communicator& world = Communicator::world();
         const DecomposeSettings decomposition = readDecomposeParDict(caseDir_, world.size());
         Snapshot snapshot = readSnapshot(snapshotFile);
-        checkPlanesFitBox(decomposition, snapshot.box, model.cutoff);
+        checkPlanesFitBox(decomposition, snapshot.box, model.cutoff,
+                          ghostReachFor(model.cutoff, snapshot.bonds.empty() ? nullptr : model.bondPotential.get()));
         System sys = buildSystem(model, std::move(snapshot), control.deltaT, snapshotFile, &world, decomposition.planes);
         FunctionObjects functions = FunctionObjects::read(control.functions, sys);
         const auto integrator = makeIntegrator(model.integrator);
@@ -288,9 +291,13 @@ private:
         const Bonds& b = sys.bonds.bonds();
         const auto k = static_cast<std::size_t>(pass.broken);
         std::ostringstream problem;
-        problem << "the bond between particles " << b.first[k] << " and " << b.second[k] << " (chain " << b.chain[k]
-                << ") is " << pass.brokenLength << " long, not shorter than the spring's maximum "
-                << sys.bondPotential->maxLength() << " (overstretched: is deltaT too large or the flow too strong?)";
+        problem << "the bond between particles " << b.first[k] << " and " << b.second[k] << " (chain " << b.chain[k] << ") is ";
+        if (pass.brokenLength == kUnseenBondLength)  // a decomposed run's ranks each held one of the two
+            problem << "longer than the ghost planes reach (" << sys.ghostReach() << " or more along x)";
+        else
+            problem << pass.brokenLength << " long";
+        problem << ", not shorter than the spring's maximum " << sys.bondPotential->maxLength()
+                << " (overstretched: is deltaT too large or the flow too strong?)";
         stopUnstable(sys, problem.str());
     }
 

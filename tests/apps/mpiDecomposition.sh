@@ -2,10 +2,13 @@
 # Domain decomposition (docs/parallel.md): the same case run by dpdFoamLike on one process and under
 # `mpirun -np N` for N = 1, 2, 3, 4, each with 1 and 2 threads, must write snapshots identical to the
 # bit (every dataset of particles.h5). Scenes: a channel between frozen lattice walls (bounce-back)
-# with a binned profile sampled every step; the same with velocity Verlet; tunable-slip walls (forces with random numbers, specular);
-# a Couette channel whose frozen walls move along x (frozen particles cross the slabs' faces) with
-# bounce-forward (crossings completed at the end of the step, after the particle may have changed
-# rank); a random wall from an image mask (geometry wall, bounce layer); uneven slabs from system/decomposeParDict; a run written on 3 ranks and continued on 2.
+# with a binned profile and its stress sampled every step; the same with velocity Verlet; tunable-slip
+# walls (forces with random numbers, specular); a Couette channel whose frozen walls move along x
+# (frozen particles cross the slabs' faces) with bounce-forward (crossings completed at the end of the
+# step, after the particle may have changed rank); a random wall from an image mask (geometry wall,
+# bounce layer); polymer chains (three ghost planes, bond vectors travelling with their beads, chain
+# statistics, the springs' stress); uneven slabs from system/decomposeParDict; a run written on 3
+# ranks and continued on 2.
 # Particles cross the slabs' faces thousands of times in each run (the flow is along x), so a rank
 # that put a particle in another order than one process would, or lost a force contribution, changes
 # the trajectories within a few hundred steps. The profile's counts must agree exactly, its sums to
@@ -78,9 +81,10 @@ $3
 EOD
 }
 
-# The reference on one process, then every rank and thread count against it.
+# The reference on one process, then every rank and thread count against it; $4 a binned profile to
+# compare (sums), $5 a file of the time directory to compare to the bit.
 compareRuns() {
-    local name=$1 base=$2 endTime=$3 sampling=${4:-}
+    local name=$1 base=$2 endTime=$3 sampling=${4:-} exact=${5:-}
     local ref=$work/$name.ref
     cp -r "$base" "$ref"
     run "$ref" 0 1 || { fail "$name: the run on one process failed: $(tail -3 "$ref/log")"; return; }
@@ -96,6 +100,10 @@ compareRuns() {
                 sameSampling "$ref/$endTime/sampling/$sampling.h5" "$c/$endTime/sampling/$sampling.h5" ||
                     fail "$name: the sampling on $ranks ranks x $threads threads differs from one process"
             fi
+            if [ -n "$exact" ]; then
+                sameSnapshot "$ref/$endTime/$exact" "$c/$endTime/$exact" ||
+                    fail "$name: $exact on $ranks ranks x $threads threads differs from one process"
+            fi
             rm -rf "$c"
         done
     done
@@ -103,10 +111,12 @@ compareRuns() {
 }
 
 # 1. A channel between frozen lattice walls, 12 planes of cells along x, body force along x, a binned
-#    profile every step: 2594 particles, 500 steps.
+#    profile with the stress (each rank traverses its own planes' pairs) every step: 2594 particles,
+#    500 steps.
 ch=$work/channel
 writeChannel "$ch" 3.5 "(-6 -3 -4.5)" "(6 3 4.5)" 5
-controlDict "$ch" 10 "functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; } }"
+channelFunctions="functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; stress yes; flowAxis x; } }"
+controlDict "$ch" 10 "$channelFunctions"
 "$bin/blockFrozenWall" -case "$ch" > "$ch/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall: $(cat "$ch/log.blockFrozenWall")"
 compareRuns channel "$ch" 10 channel
 grep -q "^Ranks" "$work/channel.ref/log" && fail "the run on one process reports ranks"
@@ -127,7 +137,9 @@ controlDict "$ts" 8 ""
 "$bin/blockFrozenWall" -case "$ts" > "$ts/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall (tunable slip): $(cat "$ts/log.blockFrozenWall")"
 compareRuns tunableSlip "$ts" 8
 
-# 3. Couette: the upper wall and its frozen particles move along x at 2, bounce-forward at both walls.
+# 3. Couette: the upper wall and its frozen particles move along x at 2, bounce-forward at both walls;
+#    the stress profile (one process finds the pairs of the particles whose crossings were completed
+#    after the sort where they are now, as the ranks' fresh cell lists do).
 co=$work/couette
 cp -r "$ch" "$co"
 rm -rf "$co"/0
@@ -135,9 +147,9 @@ sed -i -e 's/upper { type plane; point (0 0 \([0-9.]*\)); normal (0 0 -1); refle
     -e 's/lower { type plane; point (0 0 -\([0-9.]*\)); normal (0 0 1); reflection bounceBack; }/lower { type plane; point (0 0 -\1); normal (0 0 1); reflection bounceForward; }/' \
     -e 's/value (0.05 0 0)/value (0 0 0)/' "$co/constant/dpdProperties"
 grep -q "velocity (2 0 0); reflection bounceForward" "$co/constant/dpdProperties" || fail "the Couette case was not made"
-controlDict "$co" 8 ""
+controlDict "$co" 8 "$channelFunctions"
 "$bin/blockFrozenWall" -case "$co" > "$co/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall (Couette): $(cat "$co/log.blockFrozenWall")"
-compareRuns couette "$co" 8
+compareRuns couette "$co" 8 channel
 
 # 3a. Velocity Verlet (DPD-VV): a second pair loop in the step, which reads the ghosts' forces.
 vv=$work/dpdvv
@@ -193,6 +205,64 @@ for ranks in 2 3; do
 done
 echo "    geometry wall: 2 and 3 ranks x 2 threads as one process"
 
+# 3c. Polymer chains: FENE springs with r_max 3, three times the cutoff, so three ghost planes a side;
+#     10 chains of 20 beads in a channel 30 x 3 x 24 (30 planes), driven along x: beads and bonds
+#     cross the slabs' faces and the periodic boundary. The springs are soft (H 0.5): bonds stretch
+#     to ~2.8, so a rank needs all three ghost planes (with two a bond's other bead goes missing
+#     within 150 steps), and bond vectors across the 3-thick y reach half its length, where a vector
+#     followed from a stale one picks the wrong image (a bead's bond vectors must go with it when it
+#     changes rank; without, the runs differ). Chain statistics every 10 steps (gathered on rank 0),
+#     the stress with the springs' virial every 5.
+#     Then bonded pairs feeling a weighted DPD force (the correction reads the ghosts' velocities),
+#     DPD-VV (the ghosts' forces refreshed with their bond forces), a run written on 3 ranks and
+#     continued on 2 (the snapshot's bond vectors), and uneven slabs.
+pc=$work/chains
+writeChannel "$pc" 11 "(-15 -1.5 -12)" "(15 1.5 12)" 3
+echo "bonds { type FENE; H 0.5; rMax 3; }" >> "$pc/constant/dpdProperties"
+sed -i -e 's/^species .*/species { fluid { frozen no; } polymer { frozen no; } wall { frozen yes; } }/' \
+    -e 's/^pairCoeffs .*/pairCoeffs { fluid-fluid { a 18.75; gamma 4.5; } polymer-polymer { a 18.75; gamma 4.5; } fluid-polymer { a 18.75; gamma 4.5; } fluid-wall { a 18.75; gamma 4.5; } polymer-wall { a 18.75; gamma 4.5; } }/' \
+    "$pc/constant/dpdProperties"
+echo "$header chains 10; length 20; species polymer; replace fluid; clearance 0.5; seed 3;" > "$pc/system/insertChainsDict"
+chainFunctions="functions { chains { type chainStatistics; flowAxis x; sampleInterval 10; samplesPerBlock 10; axis x; nBins 6; }
+    chainStress { type binnedProfile; axis z; nBins 11; min -11; max 11; sampleInterval 5; samplesPerBlock 20; stress yes; flowAxis x; } }"
+controlDict "$pc" 10 "$chainFunctions"
+"$bin/blockFrozenWall" -case "$pc" > "$pc/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall (chains): $(tail -3 "$pc/log.blockFrozenWall")"
+"$bin/insertChains" -case "$pc" > "$pc/log.insertChains" 2>&1 || fail "insertChains: $(tail -3 "$pc/log.insertChains")"
+compareRuns chains "$pc" 10 chainStress chains/chains.h5
+grep -q "Bonds          : 190 in 10 chains" "$work/chains.ref/log" || fail "the chain case has no chains: $(grep Bonds "$work/chains.ref/log")"
+# A variant of case $2 (sed expression $3 on its dpdProperties, which must then hold $4) named $1,
+# run on one process and on $5 ranks x $6 threads: the same to the bit at time 10. $7: its functions,
+# if not those of $2.
+compareVariant() {
+    local name=$1 base=$2 edit=$3 holds=$4 ranks=$5 threads=$6
+    local c=$work/$name
+    cp -r "$base" "$c"
+    sed -i -e "$edit" "$c/constant/dpdProperties"
+    [ -n "${7:-}" ] && controlDict "$c" 10 "$7"
+    grep -q -- "$holds" "$c/constant/dpdProperties" || { fail "$name: the variant was not made"; return; }
+    cp -r "$c" "$c.ref"
+    run "$c.ref" 0 1 || fail "$name, one process: $(tail -3 "$c.ref/log")"
+    run "$c" "$ranks" "$threads" || fail "$name on $ranks ranks: $(tail -5 "$c/log")"
+    sameSnapshot "$c.ref/10/particles.h5" "$c/10/particles.h5" || fail "$name: $ranks ranks differ from one process"
+}
+compareVariant chainsWeighted "$pc" 's/^bonds .*/bonds { type FENE; H 0.5; rMax 3; bondedPairs { dpd weighted; weight 0.5; } }/' \
+    "dpd weighted" 3 2 "functions { }"  # (no stress with the bonded pairs' terms left out)
+compareVariant chainsVv "$pc" 's/type GrootWarren; lambda 0.65;/type DPDVV;/' "type DPDVV;" 2 2
+pr=$work/chainsRestart
+cp -r "$pc" "$pr"
+controlDict "$pr" 4 "$chainFunctions"
+run "$pr" 3 1 || fail "chains restart, first part: $(tail -5 "$pr/log")"
+controlDict "$pr" 10 "$chainFunctions"
+echo "$header numberOfSubdomains 2; method slabs; planes (6 24);" > "$pr/system/decomposeParDict"
+run "$pr" 2 2 || fail "chains restart, second part: $(tail -5 "$pr/log")"
+grep -q "slabs of cell planes along x 0-5 | 6-29 (of 30)" "$pr/log" || fail "chains: uneven slabs not as asked: $(grep Ranks "$pr/log")"
+sameSnapshot "$work/chains.ref/10/particles.h5" "$pr/10/particles.h5" || fail "chains: 3 ranks then 2 (uneven) differ from one process"
+sameSnapshot "$work/chains.ref/10/chains/chains.h5" "$pr/10/chains/chains.h5" || fail "chains: the restarted chain statistics differ"
+echo "$header numberOfSubdomains 2; method slabs; planes (5 25);" > "$pr/system/decomposeParDict"
+run "$pr" 2 1
+expectError $? "$pr/log" "system/decomposeParDict" "planes" "each of 2 ranks needs at least 6 planes (the 3 ghost planes"
+echo "    chains: weighted bonded pairs on 3 ranks, DPD-VV on 2, 3 ranks then 2 on uneven slabs as one process"
+
 # 4. Uneven slabs from system/decomposeParDict: 2, 3 and 7 planes.
 un=$work/uneven
 cp -r "$ch" "$un.ref"
@@ -206,9 +276,9 @@ sameSnapshot "$un.ref/10/particles.h5" "$un/10/particles.h5" || fail "uneven sla
 # 5. Written on 3 ranks at time 4, continued on 2 ranks to 10: as one process all the way.
 rs=$work/restart
 cp -r "$ch" "$rs"
-controlDict "$rs" 4 "functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; } }"
+controlDict "$rs" 4 "$channelFunctions"
 run "$rs" 3 1 || fail "restart, first part: $(tail -5 "$rs/log")"
-controlDict "$rs" 10 "functions { channel { type binnedProfile; axis z; nBins 14; min -3.5; max 3.5; samplesPerBlock 50; } }"
+controlDict "$rs" 10 "$channelFunctions"
 run "$rs" 2 2 || fail "restart, second part: $(tail -5 "$rs/log")"
 sameSnapshot "$un.ref/10/particles.h5" "$rs/10/particles.h5" || fail "3 ranks then 2 differ from one process"
 sameSampling "$un.ref/10/sampling/channel.h5" "$rs/10/sampling/channel.h5" || fail "the sampling carried across the restart differs"

@@ -1,7 +1,8 @@
 // Bond forces (docs/methods.md section 4): the FENE spring is minus the gradient of its energy; a bond
 // is followed through the periodic boundary even when longer than half the box; an overstretched bond
 // is reported, never turned into a NaN; bonds conserve momentum; the result does not depend on the
-// number of threads; bondedPairs takes back exactly the part of the DPD pair force it leaves out.
+// number of threads; a rank of a decomposed run takes its own particles' bonds only; bondedPairs takes
+// back exactly the part of the DPD pair force it leaves out.
 #include "ChainTestSystems.hpp"
 #include "forces/BondForceLoop.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
@@ -76,6 +77,85 @@ TEST(BondPass, ReportsAnOverstretchedBondInsteadOfANaN) {
     // A NaN position is a broken bond too.
     Dimer n({0, 0, 0}, {0, 0, NAN}, {0, 0, 1.0});
     EXPECT_EQ(fene.addForces(n.bonds, n.p, n.box).broken, 0);
+}
+
+namespace {
+
+// A chain 0-1-2 in the Dimer's box, and which of its particles a rank holds, in the order given.
+struct HeldTrimer {
+    Box box;
+    Bonds b;
+    Particles all;
+    HeldTrimer() {
+        box.lo = {-5, -1.5, -5};
+        box.hi = {5, 1.5, 5};
+        all.add(0, 0, 0.0, 0.0, 0.0);
+        all.add(1, 0, 1.0, 0.2, 0.0);
+        all.add(2, 0, 1.5, 0.7, 0.4);
+        b.add(0, 1, 0, {1.0, 0.2, 0.0});
+        b.add(1, 2, 0, {0.5, 0.5, 0.4});
+    }
+    Particles held(std::initializer_list<std::uint64_t> ids) const {
+        Particles p;
+        for (const std::uint64_t id : ids) p.add(id, 0, all.rx[id], all.ry[id], all.rz[id]);
+        return p;
+    }
+    // Bonds as a rank holds them: located once with every particle, then with the held ones.
+    ChainBonds onRank(const Particles& p, std::size_t ownFirst, std::size_t ownEnd) const {
+        ChainBonds c(b);
+        c.locate(all);
+        c.holdPartOnly();
+        c.locate(p);
+        c.setOwned(ownFirst, ownEnd);
+        return c;
+    }
+};
+
+}  // namespace
+
+// A rank of a decomposed run takes the bonds of its own particles only: its own particle gets the
+// force one process gives it (to the bit); a bond between two ghosts is left alone, vector and
+// forces; one whose other particle the rank does not hold is broken, of unseen length.
+TEST(BondPass, OnARankTakesOnlyTheBondsOfItsOwnParticles) {
+    const HeldTrimer t;
+    const FeneBond fene(6.0, 3.0);
+    Particles whole = t.all;
+    ChainBonds serial(t.b);
+    serial.locate(whole);
+    ASSERT_TRUE(fene.addForces(serial, whole, t.box).ok());
+
+    // Particle 1 owned, both neighbours ghosts (stored after it).
+    Particles middle = t.held({1, 2, 0});
+    ChainBonds onMiddle = t.onRank(middle, 0, 1);
+    ASSERT_TRUE(fene.addForces(onMiddle, middle, t.box).ok());
+    EXPECT_EQ(middle.fx[0], whole.fx[1]);
+    EXPECT_EQ(middle.fy[0], whole.fy[1]);
+    EXPECT_EQ(middle.fz[0], whole.fz[1]);
+
+    // Particle 0 owned: its bond is taken; bond 1-2 joins two ghosts and is left as it was.
+    Particles end = t.held({1, 0, 2});
+    ChainBonds onEnd = t.onRank(end, 1, 2);
+    onEnd.bonds().bx[1] = 9.0;  // a stale vector, which only the ranks of 1 and 2 follow
+    ASSERT_TRUE(fene.addForces(onEnd, end, t.box).ok());
+    EXPECT_EQ(end.fx[1], whole.fx[0]);
+    EXPECT_EQ(end.fy[1], whole.fy[0]);
+    EXPECT_EQ(onEnd.bonds().bx[1], 9.0);
+    EXPECT_EQ(end.fx[2], 0.0);
+    EXPECT_EQ(onEnd.bonds().bx[0], serial.bonds().bx[0]);
+
+    // Particle 1 alone: both of its bonds reach beyond what the rank holds; the first is reported.
+    Particles alone = t.held({1});
+    ChainBonds onAlone = t.onRank(alone, 0, 1);
+    const BondPassResult r = fene.addForces(onAlone, alone, t.box);
+    EXPECT_EQ(r.broken, 0);
+    EXPECT_EQ(r.brokenLength, kUnseenBondLength);
+    EXPECT_EQ(alone.fx[0], 0.0);
+
+    // A particle's bonds, for its vectors to travel with it.
+    const auto [first, last] = onAlone.bondsOf(1);
+    EXPECT_EQ(std::vector<std::uint32_t>(first, last), (std::vector<std::uint32_t>{0, 1}));
+    const auto [headFirst, headLast] = onAlone.bondsOf(0);
+    EXPECT_EQ(std::vector<std::uint32_t>(headFirst, headLast), std::vector<std::uint32_t>{0});
 }
 
 TEST(BondPass, ConservesMomentumAndDoesNotDependOnTheThreads) {

@@ -633,44 +633,87 @@ TEST(CellList, TheSortTakesTheArraysInTheGivenVisitOrderAndDropsTheDiscarded) {
     EXPECT_THROW(cells.sortParticles(p), std::logic_error);
 }
 
-// A rank's sort counts the keys of the planes near its home planes only: the cell starts it keeps
-// are those of a sort over the whole grid, on one thread and on three (each thread's share of the
-// keys then spans the windows' gap), and a particle outside those planes is refused, not misplaced.
-TEST(CellList, WithHomePlanesTheSortKeepsTheStartsOfThePlanesNearThem) {
-    Box box;  // 12 planes of 4 x 4 cells
-    box.lo = Eigen::Vector3d(0, 0, 0);
-    box.hi = Eigen::Vector3d(12, 4, 4);
+namespace {
+
+// A box of 12 planes of 4 x 4 cells, three particles at each x given (a rank's and its ghosts, around
+// a rank with planes 0-2), and that rank's home planes (its own and the one before).
+struct SlabNeighbourhood {
+    Box box;
     Particles p;
-    std::uint64_t id = 0;
-    // Planes 11, 0, 1, 2 and 3 hold particles (a rank with planes 0-2, its ghosts 11 and 3).
-    for (const double x : {11.5, 0.2, 0.7, 1.5, 2.9, 3.1, 11.9})
-        for (const double y : {0.5, 2.5, 3.7})
-            p.add(id++, 0, x, y, std::fmod(x * 7.0 + y, 4.0));
-    for (const int threads : {1, 3}) {
-        omp_set_num_threads(threads);
+    std::vector<std::uint8_t> home = std::vector<std::uint8_t>(12, 0);
+    explicit SlabNeighbourhood(std::initializer_list<double> xs) {
+        box.lo = Eigen::Vector3d(0, 0, 0);
+        box.hi = Eigen::Vector3d(12, 4, 4);
+        std::uint64_t id = 0;
+        for (const double x : xs)
+            for (const double y : {0.5, 2.5, 3.7}) p.add(id++, 0, x, y, std::fmod(x * 7.0 + y, 4.0));
+        home[11] = home[0] = home[1] = home[2] = 1;
+    }
+    // p with one more particle at (x, 1, 1).
+    Particles with(double x) const {
+        Particles q = p;
+        q.add(p.size(), 0, x, 1.0, 1.0);
+        return q;
+    }
+    // p sorted over the whole grid and as the rank sorts it (its home planes, ghostPlanes a side):
+    // the same order, and the same cell starts in the planes listed. Returns the rank's cell list.
+    CellList expectSameStarts(int ghostPlanes, std::initializer_list<int> planes) const {
         Particles whole = p, windowed = p;
         CellList all, near;
         all.setup(box, 1.0);
         near.setup(box, 1.0);
-        std::vector<std::uint8_t> home(12, 0);
-        home[11] = home[0] = home[1] = home[2] = 1;  // planes 0-2 and the one before
-        near.setHomePlanes(home);
+        near.setHomePlanes(home, ghostPlanes);
         all.sortParticles(whole);
         near.sortParticles(windowed);
         EXPECT_EQ(near.sortedCount(), all.sortedCount());
         EXPECT_EQ(windowed.id, whole.id);
+        for (const int ix : planes)
+            for (int c = near.cellIndex(ix, 0, 0); c < near.cellIndex(ix, 0, 0) + 16; ++c) {
+                EXPECT_EQ(near.cellStart(c), all.cellStart(c)) << "plane " << ix << " cell " << c;
+                EXPECT_EQ(near.mobileEnd(c), all.mobileEnd(c));
+            }
+        return near;
+    }
+};
+
+}  // namespace
+
+// A rank's sort counts the keys of the planes near its home planes only: the cell starts it keeps
+// are those of a sort over the whole grid, on one thread and on three (each thread's share of the
+// keys then spans the windows' gap), and a particle outside those planes is refused, not misplaced.
+TEST(CellList, WithHomePlanesTheSortKeepsTheStartsOfThePlanesNearThem) {
+    // Planes 11, 0, 1, 2 and 3 hold particles (a rank with planes 0-2, its ghosts 11 and 3).
+    const SlabNeighbourhood n{11.5, 0.2, 0.7, 1.5, 2.9, 3.1, 11.9};
+    for (const int threads : {1, 3}) {
+        SCOPED_TRACE(threads);
+        omp_set_num_threads(threads);
         // Planes 10-11 and 0-4 (the home planes, one below, two above): every cell start as the whole
         // sort's. The keys of planes 0-4, then those of 10-11: with three threads the last one's
         // share spans the gap between them.
-        for (const int ix : {10, 11, 0, 1, 2, 3, 4})
-            for (int c = near.cellIndex(ix, 0, 0); c < near.cellIndex(ix, 0, 0) + 16; ++c) {
-                EXPECT_EQ(near.cellStart(c), all.cellStart(c)) << "plane " << ix << " cell " << c << " threads " << threads;
-                EXPECT_EQ(near.mobileEnd(c), all.mobileEnd(c));
-            }
+        CellList near = n.expectSameStarts(1, {10, 11, 0, 1, 2, 3, 4});
         // A particle in plane 6, far from the home planes.
-        Particles stray = p;
-        stray.add(id, 0, 6.5, 1.0, 1.0);
+        Particles stray = n.with(6.5);
         EXPECT_THROW(near.sortParticles(stray), std::logic_error) << threads;
+    }
+    omp_set_num_threads(1);
+}
+
+// With three ghost planes a side (a rank of a run with chains: parallel/SlabDecomposition::ghostPlanesFor)
+// the sort counts the planes of all: around a rank with planes 0-2, the cell starts of planes 9-11
+// and 0-6 are the whole sort's, where one ghost plane a side refuses particles in planes 9 and 5.
+TEST(CellList, WithThreeGhostPlanesTheSortKeepsTheStartsOfAll) {
+    const SlabNeighbourhood n{9.3, 10.2, 11.5, 0.2, 1.5, 2.9, 3.1, 4.6, 5.4, 10.9};
+    for (const int threads : {1, 3}) {
+        SCOPED_TRACE(threads);
+        omp_set_num_threads(threads);
+        CellList near = n.expectSameStarts(3, {9, 10, 11, 0, 1, 2, 3, 4, 5, 6});
+        Particles stray = n.with(7.5);
+        EXPECT_THROW(near.sortParticles(stray), std::logic_error) << threads;
+        CellList oneGhostPlane;
+        oneGhostPlane.setup(n.box, 1.0);
+        oneGhostPlane.setHomePlanes(n.home);
+        Particles again = n.p;
+        EXPECT_THROW(oneGhostPlane.sortParticles(again), std::logic_error) << threads;
     }
     omp_set_num_threads(1);
 }

@@ -56,3 +56,31 @@ TEST(SlabDecomposition, TooFewPlanesIsRefused) {
     EXPECT_THROW(SlabDecomposition::fromCuts({1, 6, 12}), std::invalid_argument);  // not from plane 0
     EXPECT_NO_THROW(SlabDecomposition::fromCuts({0, 1, 2, 12}));                   // 3 ranks: 1 plane is enough
 }
+
+// With chains a rank's ghosts reach as far as a bond (r_max over the cell width, rounded up, in whole
+// planes), all from its neighbour on that side: each slab holds that many planes, and with two ranks
+// twice as many (the one neighbour's slab gives both sides' ghost planes, which must not share one).
+TEST(SlabDecomposition, SlabsHoldTheGhostPlanesABondReaches) {
+    EXPECT_EQ(SlabDecomposition::ghostPlanesFor(1.0, 1.0), 1);
+    EXPECT_EQ(SlabDecomposition::ghostPlanesFor(1.0, 1.25), 1);
+    EXPECT_EQ(SlabDecomposition::ghostPlanesFor(3.0, 1.0), 3);
+    EXPECT_EQ(SlabDecomposition::ghostPlanesFor(3.0, 1.03), 3);
+    EXPECT_EQ(SlabDecomposition::ghostPlanesFor(3.1, 1.0), 4);
+    EXPECT_THROW(SlabDecomposition::fromCuts({0, 5, 30}, 3), std::invalid_argument);
+    EXPECT_NO_THROW(SlabDecomposition::fromCuts({0, 6, 30}, 3));
+    EXPECT_THROW(SlabDecomposition::fromCuts({0, 2, 5, 30}, 3), std::invalid_argument);
+    EXPECT_EQ(SlabDecomposition::fromCuts({0, 3, 6, 30}, 3).ghostPlanes(), 3);
+    // Balanced cuts keep to it however the weight lies.
+    std::vector<double> w(30, 1.0);
+    w[0] = 100.0;
+    const SlabDecomposition two = SlabDecomposition::balanced(w, 2, 3);
+    EXPECT_EQ(two.first(1), 6);
+    const SlabDecomposition five = SlabDecomposition::balanced(w, 5, 3);
+    for (int r = 0; r < 5; ++r) EXPECT_GE(five.end(r) - five.first(r), 3) << r;
+    try {
+        SlabDecomposition::balanced(std::vector<double>(11, 1.0), 2, 3);
+        FAIL() << "no error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("2 ranks need at least 12 (3 ghost planes a side"), std::string::npos) << e.what();
+    }
+}

@@ -21,12 +21,14 @@ BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension, co
     return {"fluid", makeStandardFluid(fluid), FunctionObjects(), -1};
 }
 
-BenchmarkScene makeChainsScene(std::size_t particles, double a) {
+BenchmarkScene makeChainsScene(std::size_t particles, double a, const Communicator& ranks) {
     ChainedFluidSettings s;
-    s.fluid.particles = particles;
+    s.fluid.particles = particles * static_cast<std::size_t>(ranks.size());
+    s.fluid.aspect.x() = ranks.size();
+    s.fluid.ranks = &ranks;
     s.fluid.a = a;
     s.length = 30;
-    s.chains = std::max<long>(1, static_cast<long>(particles / 10 / 30));  // 10 % of the particles
+    s.chains = std::max<long>(1, static_cast<long>(s.fluid.particles / 10 / 30));  // 10 % of the particles
     return {"chains", makeChainedFluid(s), FunctionObjects(), -1};
 }
 

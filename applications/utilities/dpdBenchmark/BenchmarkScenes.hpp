@@ -22,8 +22,8 @@ struct BenchmarkScene {
 BenchmarkScene makeFluidScene(std::size_t particles, double a, int dimension, const Communicator& ranks);
 
 // The standard fluid with 10 % of its particles in chains of 30 beads (FENE, H 6, r_max 3): what
-// bonds cost.
-BenchmarkScene makeChainsScene(std::size_t particles, double a);
+// bonds cost. On several ranks as the fluid (weak scaling), with three ghost planes a side (r_max).
+BenchmarkScene makeChainsScene(std::size_t particles, double a, const Communicator& ranks);
 
 // The channel: walls at z = -10 and 10 with one cutoff of frozen fcc lattice behind each, rho 4,
 // a 18.75, gamma 4.5, body force 0.02 along x, bounce-back, dt 0.04, a square cross-section sized
