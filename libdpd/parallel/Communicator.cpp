@@ -39,26 +39,36 @@ bool builtWithMpi() {
 #endif
 }
 
-void Communicator::exchange(const std::vector<char>& sendBytes, const std::vector<std::size_t>& sendSizes,
-                            std::vector<char>& received, std::vector<std::size_t>& counts) const {
-    if (static_cast<int>(sendSizes.size()) != size_) throw std::logic_error("Communicator::exchange: one count per rank");
-    counts.assign(size_, 0);
-    if (size_ == 1) {
-        received = sendBytes;
-        counts[0] = received.size();
+void Communicator::exchangeWithNeighbours(int below, int above, const std::vector<char>& toBelow,
+                                          const std::vector<char>& toAbove, std::vector<char>& fromBelow,
+                                          std::vector<char>& fromAbove) const {
+    if (size_ == 1) {  // one rank is its own neighbour on both sides
+        fromBelow = toAbove;
+        fromAbove = toBelow;
         return;
     }
 #ifdef DPD_HAVE_MPI
-    std::vector<int> sendCounts(size_), recvCounts(size_);
-    for (int r = 0; r < size_; ++r) sendCounts[r] = byteCount(sendSizes[r]);
-    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    const std::vector<int> sendAt = displacements(sendCounts), recvAt = displacements(recvCounts);
-    std::size_t total = 0;
-    for (int r = 0; r < size_; ++r) total += static_cast<std::size_t>(recvCounts[r]);
-    received.resize(total);
-    MPI_Alltoallv(sendBytes.data(), sendCounts.data(), sendAt.data(), MPI_BYTE, received.data(), recvCounts.data(),
-                  recvAt.data(), MPI_BYTE, MPI_COMM_WORLD);
-    for (int r = 0; r < size_; ++r) counts[r] = static_cast<std::size_t>(recvCounts[r]);
+    // The tags tell the two directions apart (with two ranks both neighbours are the same rank).
+    constexpr int kDown = 1, kUp = 2;
+    long sizeToBelow = static_cast<long>(toBelow.size()), sizeToAbove = static_cast<long>(toAbove.size());
+    long sizeFromBelow = 0, sizeFromAbove = 0;
+    MPI_Request sizes[4];
+    MPI_Irecv(&sizeFromAbove, 1, MPI_LONG, above, kDown, MPI_COMM_WORLD, &sizes[0]);
+    MPI_Irecv(&sizeFromBelow, 1, MPI_LONG, below, kUp, MPI_COMM_WORLD, &sizes[1]);
+    MPI_Isend(&sizeToBelow, 1, MPI_LONG, below, kDown, MPI_COMM_WORLD, &sizes[2]);
+    MPI_Isend(&sizeToAbove, 1, MPI_LONG, above, kUp, MPI_COMM_WORLD, &sizes[3]);
+    MPI_Waitall(4, sizes, MPI_STATUSES_IGNORE);
+    fromAbove.resize(static_cast<std::size_t>(sizeFromAbove));
+    fromBelow.resize(static_cast<std::size_t>(sizeFromBelow));
+    MPI_Request data[4];
+    MPI_Irecv(fromAbove.data(), byteCount(fromAbove.size()), MPI_BYTE, above, kDown, MPI_COMM_WORLD, &data[0]);
+    MPI_Irecv(fromBelow.data(), byteCount(fromBelow.size()), MPI_BYTE, below, kUp, MPI_COMM_WORLD, &data[1]);
+    MPI_Isend(toBelow.data(), byteCount(toBelow.size()), MPI_BYTE, below, kDown, MPI_COMM_WORLD, &data[2]);
+    MPI_Isend(toAbove.data(), byteCount(toAbove.size()), MPI_BYTE, above, kUp, MPI_COMM_WORLD, &data[3]);
+    MPI_Waitall(4, data, MPI_STATUSES_IGNORE);
+#else
+    (void)below;
+    (void)above;
 #endif
 }
 

@@ -18,11 +18,12 @@ public:
     bool isRoot() const { return rank_ == 0; }
     bool parallel() const { return size_ > 1; }
 
-    // Every rank sends each rank its part of `send` (rank 0's bytes first, sendCounts[r] bytes for rank
-    // r) and receives what each rank sent it, concatenated in rank order; counts[r] says how many bytes
-    // came from rank r. sendCounts.size() must be size().
-    void exchange(const std::vector<char>& send, const std::vector<std::size_t>& sendCounts, std::vector<char>& received,
-                  std::vector<std::size_t>& counts) const;
+    // With the ranks in a ring of slabs: sends `toBelow` to rank `below` and `toAbove` to rank `above`,
+    // and receives what they sent this rank: `fromBelow` what `below` sent up, `fromAbove` what `above`
+    // sent down (with two ranks both are the same rank; the two directions stay apart). Four messages
+    // of data a rank, whatever the number of ranks (an all-to-all exchange would cost each rank P).
+    void exchangeWithNeighbours(int below, int above, const std::vector<char>& toBelow, const std::vector<char>& toAbove,
+                                std::vector<char>& fromBelow, std::vector<char>& fromAbove) const;
     // Every rank's bytes, concatenated in rank order, on the root only (elsewhere `all` is left empty);
     // counts[r] the bytes of rank r (on the root).
     void gather(const std::vector<char>& mine, std::vector<char>& all, std::vector<std::size_t>& counts) const;

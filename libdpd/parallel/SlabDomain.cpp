@@ -55,6 +55,18 @@ struct MigrationHeader {
     std::uint64_t particles = 0, deferred = 0, bondVectors = 0;
 };
 
+struct MigrationParcel {
+    MigrationHeader header;
+    std::vector<char> records, crossings, bondVectors;
+    std::vector<char> bytes() const {
+        std::vector<char> out(reinterpret_cast<const char*>(&header), reinterpret_cast<const char*>(&header) + sizeof header);
+        out.insert(out.end(), records.begin(), records.end());
+        out.insert(out.end(), crossings.begin(), crossings.end());
+        out.insert(out.end(), bondVectors.begin(), bondVectors.end());
+        return out;
+    }
+};
+
 constexpr std::uint32_t kBlock = 8;
 
 // The planes of a slab but its first and last, for a quick test of a block of particles.
@@ -140,10 +152,11 @@ void SlabDomain::keepOwned(Particles& p, const CellList& cells) const {
 
 void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells, std::vector<DeferredCrossing>& deferred,
                          ChainBonds* bonds, Particles& fromLower, std::vector<std::uint32_t>& leavers) const {
-    const int ranks = comm_->size(), me = comm_->rank();
+    const int me = comm_->rank(), n = slabs_.planes();
     const int lo = firstPlane(), hi = endPlane();
-    std::vector<std::vector<char>> records(ranks), crossings(ranks), bondVectors(ranks);
-    std::vector<MigrationHeader> headers(ranks);
+    const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
+    // What goes down to `below` and up to `above` (with two ranks, one rank: all of it down).
+    MigrationParcel parcels[2];
     std::vector<std::uint8_t> deferredLeaves(deferred.size(), 0);
     leavers.clear();
     firstPlaneOwn_.clear();
@@ -167,47 +180,41 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
                 continue;
             }
             const int to = slabs_.ownerOf(plane);
+            if (to != below && to != above)
+                throw std::runtime_error("particle " + std::to_string(p.id[i]) + " moved from the slab of rank " + std::to_string(me) +
+                                         " to plane " + std::to_string(plane) + " of rank " + std::to_string(to) +
+                                         ", past the neighbouring slabs, in one step: the run is unstable (is deltaT too large?)");
+            MigrationParcel& parcel = parcels[to == below ? 0 : 1];
             leavers.push_back(i);
-            appendRecord(p, i, records[to]);
-            ++headers[to].particles;
-            if (bonds) appendBondVectors(*bonds, p.id[i], bondVectors[to], headers[to].bondVectors);
+            appendRecord(p, i, parcel.records);
+            ++parcel.header.particles;
+            if (bonds) appendBondVectors(*bonds, p.id[i], parcel.bondVectors, parcel.header.bondVectors);
             const auto d = std::lower_bound(deferred.begin(), deferred.end(), p.id[i],
                                             [](const DeferredCrossing& c, std::uint64_t id) { return c.id < id; });
             if (d != deferred.end() && d->id == p.id[i]) {
-                const std::size_t at = crossings[to].size();
-                crossings[to].resize(at + sizeof(DeferredCrossing));
-                std::memcpy(crossings[to].data() + at, &*d, sizeof(DeferredCrossing));
+                const std::size_t at = parcel.crossings.size();
+                parcel.crossings.resize(at + sizeof(DeferredCrossing));
+                std::memcpy(parcel.crossings.data() + at, &*d, sizeof(DeferredCrossing));
                 deferredLeaves[static_cast<std::size_t>(d - deferred.begin())] = 1;
-                ++headers[to].deferred;
+                ++parcel.header.deferred;
             }
         }
-    // Each rank's part in one buffer, in rank order: header, particles, crossings, bond vectors.
-    std::vector<char> send;
-    std::vector<std::size_t> sendBytes(ranks);
-    for (int r = 0; r < ranks; ++r) {
-        const char* h = reinterpret_cast<const char*>(&headers[r]);
-        send.insert(send.end(), h, h + sizeof(MigrationHeader));
-        send.insert(send.end(), records[r].begin(), records[r].end());
-        send.insert(send.end(), crossings[r].begin(), crossings[r].end());
-        send.insert(send.end(), bondVectors[r].begin(), bondVectors[r].end());
-        sendBytes[r] = sizeof(MigrationHeader) + records[r].size() + crossings[r].size() + bondVectors[r].size();
-    }
-    std::vector<char> received;
-    std::vector<std::size_t> counts;
-    comm_->exchange(send, sendBytes, received, counts);
+    std::vector<char> fromBelow, fromAbove;
+    comm_->exchangeWithNeighbours(below, above, parcels[0].bytes(), parcels[1].bytes(), fromBelow, fromAbove);
 
     std::size_t kept = 0;
     for (std::size_t k = 0; k < deferred.size(); ++k)
         if (!deferredLeaves[k]) deferred[kept++] = deferred[k];
     deferred.resize(kept);
     fromLower = Particles();
-    const char* at = received.data();
-    for (int r = 0; r < ranks; ++r) {
-        const char* next = at + counts[r];
+    // In the senders' rank order, as one process holds them: those from lower ranks go before this
+    // rank's own (fromLower), those from higher ranks after them.
+    const auto take = [&](const std::vector<char>& bytes, int from) {
+        const char* at = bytes.data();
         MigrationHeader h;
         std::memcpy(&h, at, sizeof h);
         at += sizeof h;
-        if (r != me) appendRecords(at, h.particles, r < me ? fromLower : p);
+        appendRecords(at, h.particles, from < me ? fromLower : p);
         at += h.particles * sizeof(ParticleRecord);
         for (std::uint64_t k = 0; k < h.deferred; ++k, at += sizeof(DeferredCrossing)) {
             DeferredCrossing d;
@@ -216,13 +223,19 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
         }
         if (h.bondVectors > 0 && !bonds) throw std::logic_error("SlabDomain::migrate: bond vectors came to a run without bonds");
         if (bonds) takeBondVectors(at, h.bondVectors, *bonds);
-        at = next;
+    };
+    if (below <= above) {
+        take(fromBelow, below);
+        take(fromAbove, above);
+    } else {
+        take(fromAbove, above);
+        take(fromBelow, below);
     }
     std::sort(deferred.begin(), deferred.end(), [](const DeferredCrossing& a, const DeferredCrossing& b) { return a.id < b.id; });
 }
 
 void SlabDomain::addGhosts(const Particles& fromLower, Particles& p, const Ranges& own, const CellList& cells) const {
-    const int ranks = comm_->size(), n = slabs_.planes();
+    const int n = slabs_.planes();
     if (own.empty()) throw std::logic_error("SlabDomain::addGhosts: no own ranges");
     const int lo = firstPlane(), hi = endPlane();
     const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
@@ -243,19 +256,15 @@ void SlabDomain::addGhosts(const Particles& fromLower, Particles& p, const Range
     for (const std::uint32_t i : lastPlaneOwn_) lastPlane.emplace_back(&p, i);
     const auto fromHigher = own.back();  // migrate appended them: the last range
     for (std::uint32_t i = fromHigher.first; i < fromHigher.second; ++i) sortIn(p, i);
-    std::vector<std::size_t> sendBytes(ranks, 0);
-    sendBytes[below] += columnBytes(firstPlane.size());
-    sendBytes[above] += columnBytes(lastPlane.size());
-    std::vector<char>& send = sendBuffer_;
-    send.resize(columnBytes(firstPlane.size()) + columnBytes(lastPlane.size()));
-    // Rank order in the buffer; with two ranks below and above are one rank: the first plane first.
-    if (below <= above) writeColumns(lastPlane, writeColumns(firstPlane, send.data()));
-    else writeColumns(firstPlane, writeColumns(lastPlane, send.data()));
-    std::vector<std::size_t> counts;
-    comm_->exchange(send, sendBytes, receiveBuffer_, counts);
-    // Whole blocks of columns, in rank order: the neighbours' planes in one process's order.
-    const char* end = receiveBuffer_.data() + receiveBuffer_.size();
-    for (const char* at = receiveBuffer_.data(); at != end;) at = appendColumns(at, p);
+    sendBelow_.resize(columnBytes(firstPlane.size()));
+    writeColumns(firstPlane, sendBelow_.data());
+    sendAbove_.resize(columnBytes(lastPlane.size()));
+    writeColumns(lastPlane, sendAbove_.data());
+    comm_->exchangeWithNeighbours(below, above, sendBelow_, sendAbove_, receiveBelow_, receiveAbove_);
+    // A block of columns from each side, each its sender's planes in one process's order; the two fill
+    // planes of their own (a slab holds enough planes for that), so which comes first does not matter.
+    appendColumns(receiveBelow_.data(), p);
+    appendColumns(receiveAbove_.data(), p);
 }
 
 namespace {
@@ -271,45 +280,35 @@ std::pair<std::size_t, std::size_t> planeRange(const CellList& cells, int plane)
 }  // namespace
 
 void SlabDomain::refreshGhostForces(Particles& p, const CellList& cells) const {
-    const int ranks = comm_->size(), n = slabs_.planes();
+    const int n = slabs_.planes();
     const int lo = firstPlane(), hi = endPlane();
     const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
-    const auto first = planeRange(cells, lo), last = planeRange(cells, hi - 1);
-    const auto lowerGhosts = planeRange(cells, (lo - 1 + n) % n), upperGhosts = planeRange(cells, hi % n);
     // Each plane's particles are one range of the sorted arrays: its forces go as three columns.
-    const std::size_t perParticle = 3 * sizeof(double);
-    std::vector<char>& send = sendBuffer_;
-    send.resize((first.second - first.first + last.second - last.first) * perParticle);
-    char* to = send.data();
-    const auto put = [&](std::pair<std::size_t, std::size_t> r) {
+    const auto put = [&](std::pair<std::size_t, std::size_t> r, std::vector<char>& to) {
+        const std::size_t bytes = (r.second - r.first) * sizeof(double);
+        to.resize(3 * bytes);
+        char* at = to.data();
         for (const auto* f : {&p.fx, &p.fy, &p.fz}) {
-            std::memcpy(to, f->data() + r.first, (r.second - r.first) * sizeof(double));
-            to += (r.second - r.first) * sizeof(double);
+            std::memcpy(at, f->data() + r.first, bytes);
+            at += bytes;
         }
     };
-    std::vector<std::size_t> sendBytes(ranks, 0);
-    sendBytes[below] += (first.second - first.first) * perParticle;
-    sendBytes[above] += (last.second - last.first) * perParticle;
-    // In rank order; with one neighbour on both sides, the first plane first.
-    if (below <= above) { put(first); put(last); }
-    else { put(last); put(first); }
-    std::vector<std::size_t> counts;
-    std::vector<char>& received = receiveBuffer_;
-    comm_->exchange(send, sendBytes, received, counts);
-    const std::size_t ghosts = lowerGhosts.second - lowerGhosts.first + upperGhosts.second - upperGhosts.first;
-    if (received.size() != ghosts * perParticle)
-        throw std::logic_error("SlabDomain::refreshGhostForces: the neighbours' planes and the ghosts differ in number");
-    // From `above` its first plane (our upper ghosts), from `below` its last (our lower ghosts).
-    const char* at = received.data();
-    const auto take = [&](std::pair<std::size_t, std::size_t> r) {
+    // Down the first plane's, up the last plane's: the neighbours hold them as ghosts in the same order.
+    put(planeRange(cells, lo), sendBelow_);
+    put(planeRange(cells, hi - 1), sendAbove_);
+    comm_->exchangeWithNeighbours(below, above, sendBelow_, sendAbove_, receiveBelow_, receiveAbove_);
+    const auto take = [&](const std::vector<char>& from, std::pair<std::size_t, std::size_t> r) {
         const std::size_t bytes = (r.second - r.first) * sizeof(double);
+        if (from.size() != 3 * bytes)
+            throw std::logic_error("SlabDomain::refreshGhostForces: a neighbour's plane and the ghosts differ in number");
+        const char* at = from.data();
         for (auto* f : {&p.fx, &p.fy, &p.fz}) {
             std::memcpy(f->data() + r.first, at, bytes);
             at += bytes;
         }
     };
-    if (below < above) { take(lowerGhosts); take(upperGhosts); }
-    else { take(upperGhosts); take(lowerGhosts); }
+    take(receiveBelow_, planeRange(cells, (lo - 1 + n) % n));  // below's last plane: the lower ghosts
+    take(receiveAbove_, planeRange(cells, hi % n));            // above's first plane: the upper ghosts
 }
 
 std::pair<std::size_t, std::size_t> SlabDomain::ownRange(const CellList& cells) const {
@@ -342,16 +341,12 @@ Particles SlabDomain::withPlaneAbove(const Particles& own, const CellList& cells
     ParticleRefs firstPlane;
     for (std::uint32_t i = 0; i < own.size(); ++i)
         if (planeOf(cells, own.rx[i]) == lo) firstPlane.emplace_back(&own, i);
-    std::vector<char> send(columnBytes(firstPlane.size()));
+    std::vector<char> send(columnBytes(firstPlane.size())), fromBelow, fromAbove;
     writeColumns(firstPlane, send.data());
-    std::vector<std::size_t> sendBytes(static_cast<std::size_t>(comm_->size()), 0);
-    sendBytes[static_cast<std::size_t>(slabs_.ownerOf((lo - 1 + n) % n))] = send.size();
-    std::vector<char> received;
-    std::vector<std::size_t> counts;
-    comm_->exchange(send, sendBytes, received, counts);
+    comm_->exchangeWithNeighbours(slabs_.ownerOf((lo - 1 + n) % n), slabs_.ownerOf(endPlane() % n), send, {}, fromBelow,
+                                  fromAbove);
     Particles local = own;
-    const char* end = received.data() + received.size();
-    for (const char* at = received.data(); at != end;) at = appendColumns(at, local);
+    appendColumns(fromAbove.data(), local);
     return local;
 }
 

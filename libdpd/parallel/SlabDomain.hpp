@@ -96,7 +96,7 @@ private:
     mutable std::vector<std::uint32_t> firstPlaneOwn_, lastPlaneOwn_;
     mutable ParticleRefs firstPlaneRefs_, lastPlaneRefs_;  // addGhosts' lists of what it sends, kept between steps
     // Kept between steps, so that a step allocates (and the kernel clears) no new pages for them.
-    mutable std::vector<char> sendBuffer_, receiveBuffer_;
+    mutable std::vector<char> sendBelow_, sendAbove_, receiveBelow_, receiveAbove_;
 };
 
 }  // namespace dpd

@@ -209,7 +209,6 @@ std::vector<SymmetricTensor> pairVirial(const System& sys, const BinLayout& L, c
     return bins;
 }
 
-
 // The springs' virial: for a bond b = r_second - r_first with F_second = f(b^2) b, the pair's
 // r_ij F_ij (i the first) is f b b, shared along the bond's segment like a pair's. In bond order; in a
 // decomposed run each rank takes the bonds whose first particle it owns.

@@ -92,7 +92,7 @@ const Snapshot& wholeSnapshot(const System& sys, const Snapshot& part, Snapshot&
     if (!sys.domain()) return part;
     gathered = part;
     gathered.particles = sys.domain()->gather(part.particles);
-    gathered.bonds = bondsOnRoot(sys.domain()->communicator(), part.bonds, part.particles);
+    if (!part.bonds.empty()) gathered.bonds = bondsOnRoot(sys.domain()->communicator(), part.bonds, part.particles);
     return gathered;
 }
 

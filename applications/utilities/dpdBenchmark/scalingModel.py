@@ -13,7 +13,7 @@ One rank's step on P ranks, N particles at density rho in a cube of side L = (N 
             for cubes of edge w = L / P^(1/3), three such faces.
   ghosts    G = 2 rho L^2 r_c per slab (two planes); rho ((w + 2 r_c)^3 - w^3) per cube
   exchange  t_g G + m (alpha + 81 G / (m beta)) with m messages per step: 2 x 2 for slabs (migration
-            and ghosts, to two neighbours), 2 x 26 for cubes; or, as built now, all-to-all: 2 P
+            and ghosts, to two neighbours: as built), 2 x 26 for cubes; or, as first built, all-to-all: 2 P
             messages of which 2 x 2 carry data.
 Efficiency (strong scaling) E(P) = t_p N / (P T(P)). Slabs need at least one cell plane (one cutoff)
 per rank, and more to pay: where E falls under 50 %, or under the cubes', slabs stop paying.
@@ -59,7 +59,7 @@ def main():
     p.add_argument("--beta", type=float, default=1.0e10, help="bandwidth, bytes/s (this machine: 10 GB/s)")
     p.add_argument("--rho", type=float, default=3.0)
     p.add_argument("--rc", type=float, default=1.0)
-    p.add_argument("--alltoall", action="store_true", help="the exchange as built now (all-to-all, 2P messages)")
+    p.add_argument("--alltoall", action="store_true", help="the exchange as first built (all-to-all, 2P messages)")
     p.add_argument("--measured2", type=float, default=None, help="measured weak-scaling efficiency, 2 ranks")
     a = p.parse_args()
 
