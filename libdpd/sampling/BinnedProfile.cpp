@@ -6,6 +6,7 @@
 #include "sampling/BinAccumulatorFile.hpp"
 #include "sampling/BinLayoutDictionary.hpp"
 #include "sampling/PairVirial.hpp"
+#include "walls/PlanarWallSettings.hpp"
 #include "system/System.hpp"
 
 #include <filesystem>
@@ -34,6 +35,16 @@ std::vector<std::uint8_t> readSpeciesMask(const Dictionary& d, const System& sys
     return mask;
 }
 
+// Whether a wall completes crossings at the end of the step (bounce-forward: to the position mirrored
+// across its plane) that move particles along x, the axis of a decomposed run's slabs.
+bool movesAcrossSlabsAfterSort(const WallList& walls) {
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+        const PlanarWallSettings* plane = walls[w].plane();
+        if (plane && plane->rule == ReflectionRule::bounceForward && plane->normal.x() != 0.0) return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 std::unique_ptr<FunctionObject> BinnedProfile::New(const Dictionary& d, const std::string& name, const System& sys) {
@@ -55,6 +66,9 @@ std::unique_ptr<FunctionObject> BinnedProfile::New(const Dictionary& d, const st
         f->accumulator_.setStressFlowAxis(flow);
         if (sys.bondedPairsCorrected())
             d.fail("stress", "is not sampled with bondedPairs other than dpd all (the pair virial would count the left-out terms)");
+        if (sys.domain() && movesAcrossSlabsAfterSort(sys.walls))
+            d.fail("stress", "is not sampled on several ranks with a bounceForward wall whose normal has an x component (a crossing "
+                             "it completes after the step's sort can carry a particle past a slab's face): run on one rank");
     } else if (d.found("flowAxis")) {
         d.fail("flowAxis", "only with stress yes");
     }

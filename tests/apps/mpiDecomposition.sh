@@ -284,7 +284,9 @@ sameSnapshot "$un.ref/10/particles.h5" "$rs/10/particles.h5" || fail "3 ranks th
 sameSampling "$un.ref/10/sampling/channel.h5" "$rs/10/sampling/channel.h5" || fail "the sampling carried across the restart differs"
 
 # 6. Refusals: subdomains other than the ranks; planes that do not add up to the box's; too many
-#    ranks for the planes (or a slab too thin); an integrator that cannot run decomposed.
+#    ranks for the planes (or a slab too thin); the stress with a bounce-forward wall facing x (its
+#    completed crossings move particles along x after the sort); an integrator that cannot run
+#    decomposed.
 bad=$work/bad
 cp -r "$ch" "$bad"
 echo "$header numberOfSubdomains 4; method slabs;" > "$bad/system/decomposeParDict"
@@ -299,6 +301,13 @@ expectError $? "$bad/log" "system/decomposeParDict" "planes" "each of 2 ranks ne
 rm "$bad/system/decomposeParDict"
 run "$bad" 13 1
 expectError $? "$bad/log" "12 planes of cells along x" "13 ranks need at least 13"
+cp "$bad/constant/dpdProperties" "$bad/dpdProperties.kept"
+sed -i -e 's/^\( *upper { type plane;.*\)$/\1\n    side { type plane; point (-4.5 0 0); normal (1 0 0); reflection bounceForward; }/' "$bad/constant/dpdProperties"
+echo "stability { maxInsideWalls 1000000; }" >> "$bad/constant/dpdProperties"  # the fluid behind it
+grep -q "side { type plane" "$bad/constant/dpdProperties" || fail "the x-facing wall was not added"
+run "$bad" 2 1
+expectError $? "$bad/log" "system/controlDict" "stress" "bounceForward wall whose normal has an x component"
+mv "$bad/dpdProperties.kept" "$bad/constant/dpdProperties"
 sed -i -e 's/type GrootWarren; lambda 0.65;/type Shardlow;/' "$bad/constant/dpdProperties"
 run "$bad" 2 1
 expectError $? "$bad/log" "constant/dpdProperties" "Shardlow cannot run on several ranks yet"
