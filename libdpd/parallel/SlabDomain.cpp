@@ -116,6 +116,13 @@ struct GhostSource {
 
 }  // namespace
 
+int SlabDomain::rankBelow() const {
+    const int n = slabs_.planes();
+    return slabs_.ownerOf((firstPlane() - 1 + n) % n);
+}
+
+int SlabDomain::rankAbove() const { return slabs_.ownerOf(endPlane() % slabs_.planes()); }
+
 SlabDomain::SlabDomain(const Communicator& comm, SlabDecomposition slabs)
     : comm_(&comm), slabs_(std::move(slabs)), farGhostSpecies_(256, 0) {}
 
@@ -152,9 +159,9 @@ void SlabDomain::keepOwned(Particles& p, const CellList& cells) const {
 
 void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells, std::vector<DeferredCrossing>& deferred,
                          ChainBonds* bonds, Particles& fromLower, std::vector<std::uint32_t>& leavers) const {
-    const int me = comm_->rank(), n = slabs_.planes();
+    const int me = comm_->rank();
     const int lo = firstPlane(), hi = endPlane();
-    const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
+    const int below = rankBelow(), above = rankAbove();
     // What goes down to `below` and up to `above` (with two ranks, one rank: all of it down).
     MigrationParcel parcels[2];
     std::vector<std::uint8_t> deferredLeaves(deferred.size(), 0);
@@ -235,10 +242,9 @@ void SlabDomain::migrate(Particles& p, const Ranges& own, const CellList& cells,
 }
 
 void SlabDomain::addGhosts(const Particles& fromLower, Particles& p, const Ranges& own, const CellList& cells) const {
-    const int n = slabs_.planes();
     if (own.empty()) throw std::logic_error("SlabDomain::addGhosts: no own ranges");
     const int lo = firstPlane(), hi = endPlane();
-    const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
+    const int below = rankBelow(), above = rankAbove();
     // Per plane, one process's order: those from lower ranks, the slab's own (as migrate found them),
     // those from higher ranks (appended to p after `own`'s first ranges, which migrate scanned).
     ParticleRefs& firstPlane = firstPlaneRefs_;
@@ -282,7 +288,7 @@ std::pair<std::size_t, std::size_t> planeRange(const CellList& cells, int plane)
 void SlabDomain::refreshGhostForces(Particles& p, const CellList& cells) const {
     const int n = slabs_.planes();
     const int lo = firstPlane(), hi = endPlane();
-    const int below = slabs_.ownerOf((lo - 1 + n) % n), above = slabs_.ownerOf(hi % n);
+    const int below = rankBelow(), above = rankAbove();
     // Each plane's particles are one range of the sorted arrays: its forces go as three columns.
     const auto put = [&](std::pair<std::size_t, std::size_t> r, std::vector<char>& to) {
         const std::size_t bytes = (r.second - r.first) * sizeof(double);
@@ -337,14 +343,13 @@ std::size_t SlabDomain::dropGhosts(Particles& p, const CellList& cells) const {
 }
 
 Particles SlabDomain::withPlaneAbove(const Particles& own, const CellList& cells) const {
-    const int n = slabs_.planes(), lo = firstPlane();
+    const int lo = firstPlane();
     ParticleRefs firstPlane;
     for (std::uint32_t i = 0; i < own.size(); ++i)
         if (planeOf(cells, own.rx[i]) == lo) firstPlane.emplace_back(&own, i);
     std::vector<char> send(columnBytes(firstPlane.size())), fromBelow, fromAbove;
     writeColumns(firstPlane, send.data());
-    comm_->exchangeWithNeighbours(slabs_.ownerOf((lo - 1 + n) % n), slabs_.ownerOf(endPlane() % n), send, {}, fromBelow,
-                                  fromAbove);
+    comm_->exchangeWithNeighbours(rankBelow(), rankAbove(), send, {}, fromBelow, fromAbove);
     Particles local = own;
     appendColumns(fromAbove.data(), local);
     return local;

@@ -43,6 +43,9 @@ public:
     const SlabDecomposition& slabs() const { return slabs_; }
     int firstPlane() const { return slabs_.first(comm_->rank()); }
     int endPlane() const { return slabs_.end(comm_->rank()); }
+    // The ranks of the slabs before and after this one (periodically; one rank with two ranks).
+    int rankBelow() const;
+    int rankAbove() const;
     // The planes whose cells this rank's pair loop visits as home cells: its own and the one before.
     std::vector<std::uint8_t> homePlanes() const;
 

@@ -168,17 +168,6 @@ std::vector<SymmetricTensor> traverse(const VirialScene& scene, const BinLayout&
     return total;
 }
 
-// Which particles (by index) have the given ids: a table by id (ids are dense in practice: the
-// builders number particles 0, 1, ...), the particles' ids looked up in it.
-std::vector<std::uint8_t> flagsOfIds(const Particles& p, const std::vector<std::uint64_t>& ids) {
-    std::vector<std::uint8_t> flags(p.size(), 0);
-    const std::uint64_t maxId = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end());
-    std::vector<std::uint8_t> byId(maxId + 1, 0);
-    for (const std::uint64_t id : ids) byId[id] = 1;
-    for (std::size_t i = 0; i < p.size(); ++i) flags[i] = p.id[i] <= maxId ? byId[p.id[i]] : 0;
-    return flags;
-}
-
 // The virial of the pairs at the system's state. On one rank through its cell list (the particles are
 // sorted by it after a step), the few particles a crossing completed at the end of the step moved
 // since (System::movedAfterSort) taken apart. In a decomposed run, whose ghosts are gone, through a
@@ -199,10 +188,13 @@ std::vector<SymmetricTensor> pairVirial(const System& sys, const BinLayout& L, c
     if (!sys.cellsFitPositions()) throw std::logic_error("binnedPairVirial: the particles are not sorted by the system's cells");
     if (sys.movedAfterSort().empty())
         return traverse(VirialScene(sys.particles, sys.cells(), sys.pairs, sys.box, cutoff2, L), L, eval);
-    const std::vector<std::uint8_t> moved = flagsOfIds(sys.particles, sys.movedAfterSort());
+    const std::vector<std::uint64_t>& movedIds = sys.movedAfterSort();  // increasing
+    const std::vector<std::uint32_t> at = indexById(sys.particles, movedIds.back());
     std::vector<std::uint32_t> movedIndices;
-    for (std::size_t i = 0; i < moved.size(); ++i)
-        if (moved[i]) movedIndices.push_back(static_cast<std::uint32_t>(i));
+    for (const std::uint64_t id : movedIds) movedIndices.push_back(at[id]);
+    std::sort(movedIndices.begin(), movedIndices.end());
+    std::vector<std::uint8_t> moved(sys.particles.size(), 0);
+    for (const std::uint32_t i : movedIndices) moved[i] = 1;
     const VirialScene scene(sys.particles, sys.cells(), sys.pairs, sys.box, cutoff2, L, &moved);
     std::vector<SymmetricTensor> bins = traverse(scene, L, eval);
     movedPairVirial(scene, L, eval, movedIndices, bins);
