@@ -3,9 +3,11 @@
 
 Reads the calibration (calibration/gammaL.dat: where the wall acts, each sector's gamma_L and the slip
 it gives), the sweeps (slipTensor's results per run: sweepAngle/, and at full size sweepGasFraction/,
-sweepLocalSlip/, sweepHeight/, sweepForce/) and the fluid at rest over the stripes (rest/); computes
-the reference with stripedSlip at the calibrated slips in the channel between the hydrodynamic walls;
-writes results.dat and stripedWall.png and exits non-zero when a check fails:
+sweepLocalSlip/, sweepHeight/, sweepForce/, sweepPeriod/) and the fluid at rest over the stripes
+(rest/); computes the reference with stripedSlip at the calibrated slips in the channel between the
+hydrodynamic walls;
+writes results.dat and stripedWall.png and exits non-zero when a check fails (the first fluid layer's
+speed and areal density at 0 and 90 degrees are written as information):
   - b_par and b_perp (mean of the walls, from the hydrodynamic wall) within max(3 standard errors, 5 %)
     of the reference: in the angle sweep the weighted mean of the runs that drive each, elsewhere per
     run (gas fraction, local slip, height); and b_par - b_perp of the angle sweep, which does not
@@ -14,6 +16,8 @@ writes results.dat and stripedWall.png and exits non-zero when a check fails:
     between 0 and 90 and every channel height, and zero within 3 standard errors at theta 0 and 90;
   - the flux linear in the force: at twice the force, the flux per unit force along and across the
     stripes within 3 standard errors of the flux at the standard force;
+  - at the period 40 (sweepPeriod/), b_par at theta 0 and b_perp at theta 90 against the reference
+    at that period, as above;
   - at rest, the layer next to the walls (within zc) holds the same density and kT over the gas and
     the no-slip sectors, within 3 standard errors of their difference.
 The standard error of a comparison holds the run's, the wall position's (slip lengths) and the
@@ -57,12 +61,13 @@ class Reference:
     b_eff b0 larger. `error(get)` is the calibration's share: half the spread of the reference at each
     sector's slip +- its error, the two in quadrature."""
 
-    def __init__(self, cal, gas_fraction, slip, slip_error, height, angles=(45.0,)):
+    def __init__(self, cal, gas_fraction, slip, slip_error, height, angles=(45.0,), period=None):
         b0, e0 = cal["gammaNoSlipSlip"], cal["gammaNoSlipSlipError"]
         self.angles = list(angles)
+        period = period or cal["period"]
 
         def solve(b, residual):
-            d = run_striped_slip(gas_fraction, b - residual, height + 2 * residual, cal["period"], self.angles)
+            d = run_striped_slip(gas_fraction, b - residual, height + 2 * residual, period, self.angles)
             d["slipParallel"] += residual
             d["slipPerpendicular"] += residual
             return d
@@ -131,6 +136,77 @@ def rest_layer(path, wall_low, wall_high, period, gas_fraction):
         out[name] = {q: (float(np.sum(w * t[q][sel]) / np.sum(w)),
                          float(np.sqrt(np.sum((w * t[q + "Err"][sel]) ** 2)) / np.sum(w))) for q in ("density", "kT")}
     return out, t, near
+
+
+def first_layer(path, wall_low, wall_high, period, gas_fraction):
+    """The first fluid layer, packed against each wall (from the plane to the first density minimum past
+    the peak), from a run's stripeGrid: its mean velocity over the period (mass-weighted, both walls)
+    across the stripes (x) and along them (y), its areal density over the downstream half of the gas
+    sectors (downstream: in the direction of the flow across the stripes) against the upstream half,
+    relative, with the error of bins taken as independent, and its depth. None without a minimum within
+    two cutoffs of the plane."""
+    t = read_table(path)
+    d = np.minimum(t["z"] - wall_low, wall_high - t["z"])
+    depths = np.unique(np.round(d, 9))
+    profile = np.array([np.mean(t["density"][np.isclose(d, v)]) for v in depths])
+    peak = int(np.argmax(profile))
+    minimum = peak + int(np.argmax(np.diff(profile[peak:]) > 0))  # the first bin where density rises again
+    if depths[minimum] > 2.0 * ZC:
+        return None  # no packed layer (a fluid without conservative force: its density is the bulk's)
+    layer = d < depths[minimum] - 1e-9
+    dz = depths[1] - depths[0]
+    mass = t["density"][layer] * dz
+    velocity = {axis: float(np.sum(mass * t["u" + axis][layer]) / np.sum(mass)) for axis in ("x", "y")}
+    phase = np.mod(t["x"][layer], period) / (gas_fraction * period)  # 0..1 over a gas sector
+    downstream = phase >= 0.5 if velocity["x"] >= 0.0 else phase < 0.5
+    halves = []
+    for sel in (downstream & (phase < 1.0), ~downstream & (phase < 1.0)):
+        halves.append((np.sum(mass[sel]), math.sqrt(np.sum((t["densityErr"][layer][sel] * dz) ** 2))))
+    (down, de), (up, ue) = halves
+    return velocity, (down / up - 1.0, math.hypot(de / up, down * ue / up ** 2)), depths[minimum] - 0.5 * dz
+
+
+def layer_study(sweep, s, ref, plane_low, plane_high, period, gas_fraction, out):
+    """The first layer in a sweep's runs at 0 and 90 degrees (information, README): across the stripes it
+    moves at a smaller share of its speed along them than the continuum's b_perp / b_par, and piles up
+    downstream."""
+    angles = [round(float(a), 2) for a in s["theta"]]
+    if 0.0 not in angles or 90.0 not in angles:
+        return
+    runs, force = {}, {}
+    for a in (0.0, 90.0):
+        k = angles.index(a)
+        runs[a] = first_layer(latest(f"{sweep}/{s['case'][k]}/postProcessing/profileBins/*/stripeGrid.dat"),
+                              plane_low, plane_high, period, gas_fraction)
+        force[a] = math.hypot(*[float(c) for c in s["bodyForce/value"][k].strip("()").split(",")])
+    if None in runs.values():
+        return
+    # Per unit force: in the continuum the mean slip velocity is b_eff times the wall's shear rate, the
+    # same for both at the same force, so the ratio is b_perp / b_par.
+    along, across = runs[0.0][0]["y"] / force[0.0], runs[90.0][0]["x"] / force[90.0]
+    out.write(f"# L {period:g}, the first fluid layer (from the plane to {runs[0.0][2]:.2f}): its mean velocity per "
+              f"unit force, along the stripes at theta 0 {along:.2f}, across them at theta 90 {across:.2f}: ratio "
+              f"{across / along:.3f}, against the continuum's b_perp / b_par "
+              f"{ref['slipPerpendicular'] / ref['slipParallel']:.3f}\n")
+    for a in (0.0, 90.0):
+        pile, err = runs[a][1]
+        out.write(f"# L {period:g}, the first layer's areal density over the gas sectors, downstream half against "
+                  f"upstream half, theta {a:g}: {pile:+.4f} +- {err:.4f}\n")
+
+
+def period_study(cal, sp, height, gas_fraction, checks, out, plane_low, plane_high):
+    """The same stripes at a larger period L (the same local slip and channel), along and across them."""
+    period = float(sp["walls/lower/tunableSlip/stripes/period"][0])
+    ref = Reference(cal, gas_fraction, cal["gammaGasSlip"], cal["gammaGasSlipError"], height, period=period)
+    angles = [round(float(a), 2) for a in sp["theta"]]
+    out.write(f"# period L {period:g} (b/L {cal['gammaGasSlip'] / period:.3f}): b_par at theta 0, b_perp at theta 90 "
+              "(reference)\n")
+    for a, key, name in ((0.0, "Parallel", "b_par"), (90.0, "Perpendicular", "b_perp")):
+        k = angles.index(a)
+        checks.append(compare(f"{name} at L {period:g}", sp["b" + key][k], sp["e" + key][k], ref["slip" + key],
+                              ref.error(lambda r, key=key: r["slip" + key]), cal["halfWidthError"]))
+        out.write(f"{name}  {sp['b' + key][k]:.4f} +- {sp['e' + key][k]:.4f} ({ref['slip' + key]:.4f})\n")
+    layer_study("sweepPeriod", sp, ref, plane_low, plane_high, period, gas_fraction, out)
 
 
 def angle_study(cal, s, height, gas_fraction, checks, out):
@@ -212,6 +288,7 @@ def main():
     s = read_runs("sweepAngle/sweep.dat", offset)
     ref = angle_study(cal, s, height, gas_fraction, checks, out)
     k45 = int(np.argmin(np.abs(s["theta"] - 45.0)))
+    layer_study("sweepAngle", s, ref, plane_low, plane_high, period, gas_fraction, out)
 
     studies = {}
     if os.path.exists("sweepGasFraction/sweep.dat"):
@@ -243,6 +320,10 @@ def main():
             checks.append((f"flux {name} linear in the force: per unit force at 2 g as at g (3 standard errors)",
                            abs(q2 - q1) <= 3 * se, f"{q2:.4f} against {q1:.4f}, difference {q2 - q1:+.4f} +- {se:.4f}"))
             out.write(f"{name}: {q1:.4f} +- {e1:.4f}, {q2:.4f} +- {e2:.4f}\n")
+
+    if os.path.exists("sweepPeriod/sweep.dat"):
+        period_study(cal, read_runs("sweepPeriod/sweep.dat", offset), height, gas_fraction, checks, out, plane_low,
+                     plane_high)
 
     layer, grid, near = rest_layer(latest("rest/postProcessing/profileBins/*/stripeGrid.dat"), plane_low, plane_high,
                                    period, gas_fraction)
