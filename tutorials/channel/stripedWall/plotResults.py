@@ -15,8 +15,8 @@ first fluid layer's speed and areal density at 0 and 90 degrees are written as i
     between 0 and 90 and every channel height, and zero within 3 standard errors at theta 0 and 90;
   - the flux linear in the force: at twice the force, the flux per unit force along and across the
     stripes within 3 standard errors of the flux at the standard force;
-  - at the period 40 (sweepPeriod/), b_par at theta 0 and b_perp at theta 90 against the reference
-    at that period, as above;
+  - at the period 40 (sweepPeriod/), b_par at theta 0, b_perp at theta 90 and b_par - b_perp against
+    the reference at that period, as above;
   - at rest, the layer next to the walls (within zc) holds the same density and kT over the gas and
     the no-slip sectors, within 3 standard errors of their difference.
 The standard error of a comparison holds the run's, the wall position's (slip lengths) and the
@@ -200,11 +200,17 @@ def period_study(cal, sp, height, gas_fraction, checks, out, plane_low, plane_hi
     angles = [round(float(a), 2) for a in sp["theta"]]
     out.write(f"# period L {period:g} (b/L {cal['gammaGasSlip'] / period:.3f}): b_par at theta 0, b_perp at theta 90 "
               "(reference)\n")
+    measured = {}
     for a, key, name in ((0.0, "Parallel", "b_par"), (90.0, "Perpendicular", "b_perp")):
         k = angles.index(a)
+        measured[key] = (sp["b" + key][k], sp["e" + key][k])
         checks.append(compare(f"{name} at L {period:g}", sp["b" + key][k], sp["e" + key][k], ref["slip" + key],
                               ref.error(lambda r, key=key: r["slip" + key]), cal["halfWidthError"]))
         out.write(f"{name}  {sp['b' + key][k]:.4f} +- {sp['e' + key][k]:.4f} ({ref['slip' + key]:.4f})\n")
+    (par, par_error), (perp, perp_error) = measured["Parallel"], measured["Perpendicular"]
+    checks.append(compare(f"b_par - b_perp at L {period:g} (the wall's position cancels)", par - perp,
+                          math.hypot(par_error, perp_error), ref["slipParallel"] - ref["slipPerpendicular"],
+                          ref.error(lambda r: r["slipParallel"] - r["slipPerpendicular"])))
     layer_study("sweepPeriod", sp, ref, plane_low, plane_high, period, gas_fraction, out)
 
 
