@@ -30,8 +30,11 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         sys.completeWalls();
         return walls;
     }
-    // Keep v + dt f / 2 aside and write v~ into v for every force that reads it (the sort may have
-    // changed the count: a decomposed run's particles came and went, and ghosts joined).
+    // Keep v + dt f / 2 aside and write v~ into v for every other force that reads it (the sort may
+    // have changed the count: a decomposed run's particles came and went, and ghosts joined). The
+    // walls' friction reads v + dt f / 2: with it this step leaves an Ornstein-Uhlenbeck bath at kT
+    // exactly for any gamma dt, where lambda's predictor cools it by (lambda - 1/2) gamma dt
+    // (docs/walls.md 3.5).
     const long n = static_cast<long>(p.size());
     hx_.resize(n); hy_.resize(n); hz_.resize(n);
     forEachParticle(sys, [&](long i, auto mobile) {
@@ -41,7 +44,7 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         p.vy[i] += s * p.fy[i];
         p.vz[i] += s * p.fz[i];
     });
-    sys.computeForces();
+    sys.computeForces(hx_.data(), hy_.data(), hz_.data());
     forEachParticle(sys, [&](long i, auto mobile) {
         // A frozen particle gets back the velocity the predictor left alone.
         const double h = mobileFactor(mobile) * halfDt;

@@ -177,7 +177,13 @@ Particles System::orderedParticles() const { return rotation_ == 0 ? particles :
 
 void System::computeForces() { computeForces(0.0); }
 
-void System::computeForces(double predictorShift) {
+void System::computeForces(const double* wallFrictionVx, const double* wallFrictionVy, const double* wallFrictionVz) {
+    computeForces(0.0, {wallFrictionVx, wallFrictionVy, wallFrictionVz});
+}
+
+void System::computeForces(double predictorShift) { computeForces(predictorShift, {nullptr, nullptr, nullptr}); }
+
+void System::computeForces(double predictorShift, const std::array<const double*, 3>& wallFriction) {
     if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
     if (predictorShift != 0.0 && hasVelocityDependentNonPairForces())
         throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with walls that act with forces");
@@ -196,6 +202,9 @@ void System::computeForces(double predictorShift) {
     addBondForces();
     if (wallForces_) {
         WallStep s = wallStep();
+        s.frictionVx = wallFriction[0];
+        s.frictionVy = wallFriction[1];
+        s.frictionVz = wallFriction[2];
         walls.addForces(s);
     }
 }

@@ -116,7 +116,9 @@ std::string PlanarWall::description() const {
     if (w.hasTunableSlip) {
         const TunableSlipParameters& t = w.tunableSlip;
         os << ", tunable slip (gammaL " << t.gammaL << ", zc " << t.zc << ", WCA epsilon " << t.epsilon << ", sigma "
-           << t.sigma << (t.tangentialOnly ? ", friction tangential" : "") << ")";
+           << t.sigma << (t.tangentialOnly ? ", friction tangential" : "");
+        if (t.behindDensity > 0.0) os << ", fluid behind a " << t.behindA << " density " << t.behindDensity;
+        os << ")";
     }
     os << std::setprecision(6) << ", velocity (" << w.velocity.x() << " " << w.velocity.y() << " " << w.velocity.z()
        << ")";

@@ -29,9 +29,9 @@ TunableSlipStripes readStripes(const Dictionary& sd, const PlanarWallSettings& w
 }
 
 // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed;
-// friction all (default) | tangential.
-TunableSlipParameters readTunableSlip(const Dictionary& td) {
-    td.checkKeys({"gammaL", "zc", "epsilon", "sigma", "stripes", "friction"});
+// friction all (default) | tangential; fluidBehind { a 25; density 3; } (optional; density 0 is none).
+TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff) {
+    td.checkKeys({"gammaL", "zc", "epsilon", "sigma", "stripes", "friction", "fluidBehind"});
     TunableSlipParameters t;
     t.gammaL = td.getNonNegative<double>("gammaL");
     t.zc = td.getPositive<double>("zc");
@@ -41,6 +41,14 @@ TunableSlipParameters readTunableSlip(const Dictionary& td) {
     if (friction != "all" && friction != "tangential")
         td.fail("friction", "expected all (every velocity component) or tangential (along the plane), got '" + friction + "'");
     t.tangentialOnly = friction == "tangential";
+    t.cutoff = cutoff;
+    if (td.found("fluidBehind")) {
+        if (!td.isDict("fluidBehind")) td.fail("fluidBehind", "expected { a ...; density ...; }");
+        const Dictionary& bd = td.subDict("fluidBehind");
+        bd.checkKeys({"a", "density"});
+        t.behindA = bd.getPositive<double>("a");
+        t.behindDensity = bd.getNonNegative<double>("density");  // 0: no fluid behind, the published wall
+    }
     return t;
 }
 
@@ -59,7 +67,9 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
     if (wd.found("tunableSlip")) {
         if (!wd.isDict("tunableSlip")) wd.fail("tunableSlip", "expected { gammaL ...; zc ...; epsilon ...; sigma ...; }");
         w.hasTunableSlip = true;
-        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"));
+        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"), c.cutoff);
+        if (c.dimension == 2 && w.tunableSlip.behindDensity > 0.0)
+            wd.subDict("tunableSlip").fail("fluidBehind", "is the force of a 3-D half-space of fluid; a 2-D scene has none");
         if (wd.subDict("tunableSlip").found("stripes")) {
             w.hasStripes = true;
             w.stripes = readStripes(wd.subDict("tunableSlip").subDict("stripes"), w, c.dimension);

@@ -2,12 +2,18 @@
 
 #include "random/PairRandom.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace dpd {
 
 double TunableSlipParameters::wcaRange() const { return std::pow(2.0, 1.0 / 6.0) * sigma; }
+
+double TunableSlipParameters::reach() const {
+    const double behind = behindDensity > 0.0 ? sigma + cutoff : 0.0;
+    return std::max({zc, wcaRange(), behind});
+}
 
 double TunableSlipParameters::frictionWeight(double z) const { return z >= 0.0 && z < zc ? 1.0 - z / zc : 0.0; }
 
@@ -18,9 +24,17 @@ double TunableSlipParameters::wcaForce(double z) const {
     return 24.0 * epsilon * (2.0 * s6 * s6 - s6) / z;
 }
 
+double TunableSlipParameters::fluidBehindForce(double z) const {
+    if (!(behindDensity > 0.0)) return 0.0;
+    const double x = std::max(z - sigma, 0.0) / cutoff;
+    if (x >= 1.0) return 0.0;
+    const double u = 1.0 - x;
+    return M_PI * behindA * behindDensity * cutoff * cutoff * cutoff * u * u * u * (1.0 + 3.0 * x) / 12.0;
+}
+
 Eigen::Vector3d TunableSlipParameters::force(double z, const Eigen::Vector3d& n, const Eigen::Vector3d& vRelative,
                                              const Eigen::Vector3d& xi, double kT, double dt) const {
-    Eigen::Vector3d f = wcaForce(z) * n;
+    Eigen::Vector3d f = (wcaForce(z) + fluidBehindForce(z)) * n;
     const double w = frictionWeight(z);
     if (w <= 0.0) return f;
     const Eigen::Vector3d bath = -gammaL * w * vRelative + std::sqrt(2.0 * kT * gammaL * w / dt) * xi;

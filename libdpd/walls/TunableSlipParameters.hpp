@@ -24,12 +24,24 @@ struct TunableSlipParameters {
     // Friction and random force on the velocity along the plane only (friction tangential): the
     // published wall acts on every component, which also damps flow towards and away from the plane.
     bool tangentialOnly = false;
+    // The fluid behind the plane (fluidBehind { a; density; }, not in the paper; docs/walls.md 3.5): the
+    // mean conservative force of a DPD fluid of that repulsion and density filling the half-space beyond
+    // the WCA's contact distance sigma, so the fluid in front is not pressed against the wall by the
+    // neighbours it lacks there. Off (density 0) by default: the published wall.
+    double behindA = 0.0;
+    double behindDensity = 0.0;
+    double cutoff = 1.0;  // the pair force's cutoff, which the fluid behind reaches across
 
     double wcaRange() const;
+    // How far in front of the plane the wall acts at all: friction, WCA and the fluid behind.
+    double reach() const;
     // w_L(z) = 1 - z/z_c for 0 <= z < z_c, else 0.
     double frictionWeight(double z) const;
     // -dV/dz for 0 < z < 2^(1/6) sigma, else 0 (positive: pushes into the fluid).
     double wcaForce(double z) const;
+    // pi a rho r_c^3 (1 - x)^3 (1 + 3x) / 12, x = max(z - sigma, 0) / r_c < 1, else 0: the normal
+    // component of a (1 - r/r_c) summed over the half-space (positive: pushes into the fluid).
+    double fluidBehindForce(double z) const;
     // The force on a particle at distance z (> 0) in front of a wall with unit normal n into the fluid,
     // moving at vRelative to the wall; xi are its unit-variance random numbers for this step.
     Eigen::Vector3d force(double z, const Eigen::Vector3d& n, const Eigen::Vector3d& vRelative, const Eigen::Vector3d& xi,

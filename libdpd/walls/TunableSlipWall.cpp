@@ -15,7 +15,7 @@ TunableSlipWall::TunableSlipWall(PlanarWallSettings settings, std::size_t index)
 void TunableSlipWall::addForces(WallStep& s) const {
     const PlanarWallSettings& w = settings();
     const TunableSlipParameters& ts = w.tunableSlip;
-    const double reach = std::max(ts.zc, ts.wcaRange());
+    const double reach = ts.reach();
     const bool threeD = s.box.isActiveAxis(1);
     Particles& p = s.particles;
     const long n = static_cast<long>(p.size());
@@ -30,7 +30,7 @@ void TunableSlipWall::addForces(WallStep& s) const {
             if (!(z > 0.0) || z >= reach) continue;
             TunableSlipParameters here = ts;
             here.gammaL = frictionAt(p.rx[i], p.ry[i], p.rz[i]);
-            const Eigen::Vector3d v = Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]) - w.velocity;
+            const Eigen::Vector3d v = s.frictionVelocity(i) - w.velocity;
             Eigen::Vector3d xi = Eigen::Vector3d::Zero();
             if (ts.frictionWeight(z) > 0.0) {
                 const auto g = s.random.particleGaussians(s.step, p.id[i], stream_);

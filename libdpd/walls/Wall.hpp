@@ -36,6 +36,16 @@ struct WallStep {
     double kT;
     double dt;
     std::vector<DeferredCrossing>& deferred;  // crossings to complete at the end of the step
+    // The velocities a wall's friction reads, where the integrator gives others than the particles'
+    // (Groot-Warren: the half-kicked v + dt f / 2, not its predictor; docs/walls.md 3.5).
+    const double* frictionVx = nullptr;
+    const double* frictionVy = nullptr;
+    const double* frictionVz = nullptr;
+
+    Eigen::Vector3d frictionVelocity(std::size_t i) const {
+        if (frictionVx) return {frictionVx[i], frictionVy[i], frictionVz[i]};
+        return {particles.vx[i], particles.vy[i], particles.vz[i]};
+    }
 };
 
 // What one wall did to the fluid in one step.

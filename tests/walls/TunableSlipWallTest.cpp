@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <string>
 
 using namespace dpd;
@@ -121,6 +122,56 @@ TEST(TunableSlipWall, ForceMatchesHandValues) {
     EXPECT_NEAR(g.x(), -1.5 + 0.5 * r, 1e-9);
     EXPECT_NEAR(g.y(), -r, 1e-9);
     EXPECT_NEAR(g.z(), 780288.0, 1e-6);
+}
+
+// The fluid behind the plane (docs/walls.md 3.5): the mean normal force a (1 - r) of a DPD fluid filling
+// z' < sigma at density rho on a particle at height z. Hand values for a 25, rho 3, r_c 1, sigma 0.5:
+// pi 75 / 12 = 19.634954084936208 at z <= sigma; at z = 1 (x = 0.5) 19.63... x 0.125 x 2.5 =
+// 6.135923151542565; nothing from z = 1.5 on. The WCA force adds to it along the normal.
+TEST(TunableSlipWall, FluidBehindForceMatchesHandValues) {
+    TunableSlipParameters t = slip(2.0, 1.0, 1.0, 0.5);
+    EXPECT_EQ(t.fluidBehindForce(0.7), 0.0) << "the published wall has no fluid behind it";
+    EXPECT_DOUBLE_EQ(t.reach(), 1.0);
+    t.behindA = 25.0;
+    t.behindDensity = 3.0;
+    EXPECT_NEAR(t.fluidBehindForce(0.3), 19.634954084936208, 1e-12);
+    EXPECT_NEAR(t.fluidBehindForce(0.5), 19.634954084936208, 1e-12);
+    EXPECT_NEAR(t.fluidBehindForce(1.0), 6.135923151542565, 1e-12);
+    EXPECT_EQ(t.fluidBehindForce(1.5), 0.0);
+    EXPECT_DOUBLE_EQ(t.reach(), 1.5);
+    const Eigen::Vector3d f = t.force(0.45, {0, 0, 1}, {0, 0, 0}, {0, 0, 0}, 1.0, 0.01);
+    EXPECT_NEAR(f.z(), 277.3192479885537 + 19.634954084936208, 1e-9);
+    t.cutoff = 2.0;  // r_c^3 (1 - x)^3 (1 + 3x) with x = (z - sigma) / r_c: at z = 1.5, x = 0.5, 8 times 0.3125
+    EXPECT_NEAR(t.fluidBehindForce(1.5), 19.634954084936208 * 8.0 * 0.3125, 1e-10);
+}
+
+// The formula is the mean of the pair forces of a random (Poisson) fluid behind sigma: the force on a
+// particle at height z from particles scattered at density rho over the slab one cutoff deep and two
+// wide, averaged over 40,000 draws, agrees within four standard errors of that average (the draws are
+// independent, so the error is the sample's standard deviation over sqrt(draws)).
+TEST(TunableSlipWall, FluidBehindForceIsTheMeanForceOfARandomHalfSpace) {
+    TunableSlipParameters t = slip(1.0, 1.0, 1.0, 0.5);
+    t.behindA = 25.0;
+    t.behindDensity = 3.0;
+    std::mt19937_64 rng(2026);
+    std::uniform_real_distribution<double> lateral(-1.0, 1.0), depth(t.sigma - 1.0, t.sigma);
+    std::poisson_distribution<int> count(t.behindDensity * 4.0);  // the slab's volume is 2 x 2 x 1
+    for (double z : {0.55, 0.8, 1.1, 1.4}) {
+        const int draws = 40000;
+        double sum = 0.0, sum2 = 0.0;
+        for (int d = 0; d < draws; ++d) {
+            double f = 0.0;
+            for (int n = count(rng); n > 0; --n) {
+                const double dx = lateral(rng), dy = lateral(rng), dz = z - depth(rng);
+                const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+                if (r < 1.0) f += t.behindA * (1.0 - r) * dz / r;
+            }
+            sum += f;
+            sum2 += f * f;
+        }
+        const double mean = sum / draws, se = std::sqrt((sum2 / draws - mean * mean) / draws);
+        EXPECT_NEAR(mean, t.fluidBehindForce(z), 4.0 * se) << "z " << z << ": standard error " << se;
+    }
 }
 
 // Through System::computeForces: one particle 0.75 in front of an upper wall (normal -z) sliding at
@@ -236,6 +287,42 @@ TEST(TunableSlipWall, WcaCollisionIsIntegrableWhenDtIsAFiftiethOfSigma) {
     EXPECT_GT(worstEnergyError(0.5, 0.02), 1.0);  // the limit is real: sigma 0.5 at dt 0.02 is not integrable
 }
 
+// A stiff wall's bath under Groot-Warren lambda 0.65 (docs/walls.md 3.5): the walls' friction reads the
+// half-kicked velocity v + dt f / 2, for which the step's Ornstein-Uhlenbeck part leaves kT exact at any
+// gamma dt; read through lambda's predictor it would cool the gas by (lambda - 1/2) gamma_L <w_L> dt to
+// first order, up to 0.15 x 80 x 0.5 x 0.01 = 6 % here (the gas fills |z| < 1, w_L = |z| on average
+// 1/2, less the WCA's zones; measured 2.7 % with the friction reading v~, shown to fail the bound).
+// gamma_L 80 relaxes the energy in ~0.0125 time units, so samples 0.2 apart are independent: kT
+// sampled 500 times over 100 time units (1080 particles, 2/N per axis per sample) has a standard error
+// near 0.002 per axis, checked within a budget of 0.004. Bound: 4 standard errors of the mean over the
+// three axes, plus a twentieth of the first-order cooling (0.003) for what the WCA and the friction's
+// change over one step leave.
+TEST(TunableSlipWall, StiffWallHoldsTheGasAtKTUnderGrootWarrenLambda065) {
+    const double dt = 0.01, gammaL = 80.0, lambda = 0.65;
+    System sys = channel(slip(gammaL, 1.0, 1.0, 0.5), 1.0, 6.0, 30.0, 1.0, dt, false);
+    GrootWarrenIntegrator gw(lambda);
+    for (int k = 0; k < static_cast<int>(2.0 / dt); ++k) gw.step(sys);
+    const int samples = 500, sampleEvery = 20;
+    std::vector<double> perSample[3];
+    for (int s = 0; s < samples; ++s) {
+        for (int k = 0; k < sampleEvery; ++k) gw.step(sys);
+        for (int a = 0; a < 3; ++a) perSample[a].push_back(kineticTemperature(sys.particles, a));
+    }
+    double mean = 0.0, err2 = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        double m = 0.0;
+        for (double x : perSample[a]) m += x / samples;
+        const double err = standardErrorOfMean(perSample[a]);
+        EXPECT_TRUE(err <= 0.004) << "axis " << a << ": standard error " << err << " over the budget 0.004";
+        std::printf("stiff tunable-slip gas (gamma_L 80, lambda 0.65), axis %d: kT = %.4f +- %.4f\n", a, m, err);
+        mean += m / 3.0;
+        err2 += err * err / 9.0;
+    }
+    const double firstOrderCooling = (lambda - 0.5) * gammaL * 0.5 * dt;
+    const double tol = 4.0 * std::sqrt(err2) + firstOrderCooling / 20.0;
+    EXPECT_NEAR(mean, 1.0, tol) << "the predictor's friction would give about " << 1.0 - firstOrderCooling;
+}
+
 // The WCA wall keeps a driven DPD fluid (rho 3, a 25, gamma 4.5) out: not one crossing of the plane in
 // 2000 steps at dt 0.02 with sigma 1 (zc 2, so the friction layer reaches past the repulsion), nor at
 // dt 0.01 with sigma 0.5 (the specular rule behind the wall counts any crossing). The counter itself is
@@ -303,7 +390,7 @@ TEST(TunableSlipWall, DictionaryEntriesAreRead) {
     const std::string text = "FoamFile { version 2.0; format ascii; class dictionary; object dpdProperties; }\n"
                              "kT 1;\nspecies { fluid { frozen no; } }\npairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n"
                              "walls { lower { type plane; point (0 0 -3); normal (0 0 1); velocity (0.1 0 0);\n"
-                             "  tunableSlip { gammaL 2; zc 1.5; epsilon 0.8; sigma 0.4; } }\n"
+                             "  tunableSlip { gammaL 2; zc 1.5; epsilon 0.8; sigma 0.4; fluidBehind { a 20; density 4; } } }\n"
                              "  upper { type plane; point (0 0 3); normal (0 0 -1); } }\n";
     const DpdModel m = readDpdModel(Dictionary::parse(text, "constant/dpdProperties"));
     ASSERT_EQ(m.walls.planes().size(), 2u);
@@ -315,6 +402,9 @@ TEST(TunableSlipWall, DictionaryEntriesAreRead) {
     EXPECT_EQ(w.tunableSlip.epsilon, 0.8);
     EXPECT_EQ(w.tunableSlip.sigma, 0.4);
     EXPECT_FALSE(w.tunableSlip.tangentialOnly) << "the published wall's friction acts on every component";
+    EXPECT_EQ(w.tunableSlip.behindA, 20.0);
+    EXPECT_EQ(w.tunableSlip.behindDensity, 4.0);
+    EXPECT_EQ(w.tunableSlip.cutoff, 1.0) << "the fluid behind reaches as far as the case's cutoff";
     EXPECT_EQ(w.rule, ReflectionRule::specular);  // the safety net's default behind a tunable-slip wall
     EXPECT_FALSE(m.walls.planes()[1]->hasTunableSlip);
     EXPECT_FALSE(m.walls[1].actsWithForces());
@@ -342,6 +432,14 @@ TEST(TunableSlipWall, BadEntriesNameFileLineAndKeyword) {
     expectError("        tunableSlip { gamaL 2; zc 1; epsilon 1; sigma 0.5; }", "gamaL");
     expectError("        tunableSlip { " + ok + " friction normal; }", "friction");
     EXPECT_EQ(inputError("        tunableSlip { " + ok + " friction tangential; }"), "");
+    EXPECT_EQ(inputError("        tunableSlip { " + ok + " fluidBehind { a 25; density 3; } }"), "");
+    expectError("        tunableSlip { " + ok + " fluidBehind { a 25; } }", "density");
+    expectError("        tunableSlip { " + ok + " fluidBehind { a 25; density -3; } }", "density");
+    EXPECT_EQ(inputError("        tunableSlip { " + ok + " fluidBehind { a 25; density 0; } }"), "") << "no fluid behind";
+    expectError("        tunableSlip { " + ok + " fluidBehind { a 0; density 3; } }", "keyword 'a'");
+    expectError("        tunableSlip { " + ok + " fluidBehind { a 25; density 3; rho 3; } }", "rho");
+    expectError("        tunableSlip { " + ok + " fluidBehind 25; }", "fluidBehind");
+    expectError("        tunableSlip { " + ok + " fluidBehind { a 25; density 3; } }", "fluidBehind", "dimension 2;\n");
     expectError("        tunableSlip 2;", "tunableSlip");
     expectError("        tunableSlip { " + ok + " }", "Shardlow", "integrator { type Shardlow; }\n");
 }
