@@ -138,8 +138,8 @@ def rest_layer(path, wall_low, wall_high, period, gas_fraction):
 
 
 def first_layer(path, wall_low, wall_high, period, gas_fraction):
-    """The first fluid layer, packed against each wall (from the plane to the first density minimum past
-    the peak), from a run's stripeGrid: its mean velocity over the period (mass-weighted, both walls)
+    """The first fluid layer against each wall (from the plane to the first density minimum past the
+    peak: packed by smooth walls, a gentle rise with the fluid behind them), from a run's stripeGrid: its mean velocity over the period (mass-weighted, both walls)
     across the stripes (x) and along them (y), its areal density over the downstream half of the gas
     sectors (downstream: in the direction of the flow across the stripes) against the upstream half,
     relative, with the error of bins taken as independent, and its depth. None without a minimum within
@@ -166,9 +166,9 @@ def first_layer(path, wall_low, wall_high, period, gas_fraction):
 
 
 def layer_study(sweep, s, ref, plane_low, plane_high, period, gas_fraction, out):
-    """The first layer in a sweep's runs at 0 and 90 degrees (information, README): across the stripes it
-    moves at a smaller share of its speed along them than the continuum's b_perp / b_par, and piles up
-    downstream."""
+    """The first layer in a sweep's runs at 0 and 90 degrees (information, README): against smooth walls
+    alone it moves across the stripes at a smaller share of its speed along them than the continuum's
+    b_perp / b_par and piles up downstream; with the fluid behind the walls it follows the continuum."""
     angles = [round(float(a), 2) for a in s["theta"]]
     if 0.0 not in angles or 90.0 not in angles:
         return
