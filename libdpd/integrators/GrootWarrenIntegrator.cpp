@@ -44,7 +44,7 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         p.vy[i] += s * p.fy[i];
         p.vz[i] += s * p.fz[i];
     });
-    sys.computeForces(hx_.data(), hy_.data(), hz_.data());
+    sys.computeForces(VelocityColumns{hx_.data(), hy_.data(), hz_.data()});
     forEachParticle(sys, [&](long i, auto mobile) {
         // A frozen particle gets back the velocity the predictor left alone.
         const double h = mobileFactor(mobile) * halfDt;

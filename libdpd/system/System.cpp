@@ -177,13 +177,11 @@ Particles System::orderedParticles() const { return rotation_ == 0 ? particles :
 
 void System::computeForces() { computeForces(0.0); }
 
-void System::computeForces(const double* wallFrictionVx, const double* wallFrictionVy, const double* wallFrictionVz) {
-    computeForces(0.0, {wallFrictionVx, wallFrictionVy, wallFrictionVz});
-}
+void System::computeForces(const VelocityColumns& wallFriction) { computeForces(0.0, wallFriction); }
 
-void System::computeForces(double predictorShift) { computeForces(predictorShift, {nullptr, nullptr, nullptr}); }
+void System::computeForces(double predictorShift) { computeForces(predictorShift, VelocityColumns{}); }
 
-void System::computeForces(double predictorShift, const std::array<const double*, 3>& wallFriction) {
+void System::computeForces(double predictorShift, const VelocityColumns& wallFriction) {
     if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
     if (predictorShift != 0.0 && hasVelocityDependentNonPairForces())
         throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with walls that act with forces");
@@ -202,9 +200,7 @@ void System::computeForces(double predictorShift, const std::array<const double*
     addBondForces();
     if (wallForces_) {
         WallStep s = wallStep();
-        s.frictionVx = wallFriction[0];
-        s.frictionVy = wallFriction[1];
-        s.frictionVz = wallFriction[2];
+        s.friction = wallFriction;
         walls.addForces(s);
     }
 }
@@ -217,7 +213,7 @@ void System::addBondForces() {
 
 WallStep System::wallStep() {
     return {particles, frozenOfSpecies_, box, random_, static_cast<std::uint64_t>(step), forceParameters.kT,
-            forceParameters.dt, deferredCrossings_};
+            forceParameters.dt, deferredCrossings_, {}};
 }
 
 WallCounters System::applyWalls() {

@@ -14,7 +14,6 @@
 #include "random/PairRandom.hpp"
 #include "walls/WallList.hpp"
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -100,9 +99,8 @@ public:
     // alone. Only where the pair forces are the only velocity-dependent ones (see below); throws
     // std::logic_error otherwise.
     void computeForces(double predictorShift);
-    // The same, the walls' friction reading the velocities (vx, vy, vz) given, one per particle in the
-    // current order, instead of the particles' own.
-    void computeForces(const double* wallFrictionVx, const double* wallFrictionVy, const double* wallFrictionVz);
+    // The same, the walls' friction reading the velocities given instead of the particles' own.
+    void computeForces(const VelocityColumns& wallFriction);
     // Adds the bonds' spring forces (nothing without bonds); part of computeForces, and of the
     // conservative forces of integrators that split the pair force.
     void addBondForces();
@@ -141,7 +139,7 @@ public:
 private:
     // Every computeForces: the pair loop's predictor shift and the velocities the walls' friction reads
     // (null: the particles').
-    void computeForces(double predictorShift, const std::array<const double*, 3>& wallFriction);
+    void computeForces(double predictorShift, const VelocityColumns& wallFriction);
     WallStep wallStep();  // what the walls act on at this step
     void decompose();     // this rank's slab of the box (initialise, with several ranks)
     // Migration and ghosts before a decomposed run's sort, and the sort's order for them.

@@ -25,6 +25,13 @@ struct DeferredCrossing {
     double x = 0.0, y = 0.0, z = 0.0;  // the position the particle goes to (unwrapped)
 };
 
+// One velocity per particle, in the particles' current order, held apart from them (none: null).
+struct VelocityColumns {
+    const double* x = nullptr;
+    const double* y = nullptr;
+    const double* z = nullptr;
+};
+
 // What a wall acts on in one step. Random draws are keyed by (seed, step, particle id, stream), so
 // nothing a wall does depends on the thread count.
 struct WallStep {
@@ -38,12 +45,10 @@ struct WallStep {
     std::vector<DeferredCrossing>& deferred;  // crossings to complete at the end of the step
     // The velocities a wall's friction reads, where the integrator gives others than the particles'
     // (Groot-Warren: the half-kicked v + dt f / 2, not its predictor; docs/walls.md 3.5).
-    const double* frictionVx = nullptr;
-    const double* frictionVy = nullptr;
-    const double* frictionVz = nullptr;
+    VelocityColumns friction;
 
     Eigen::Vector3d frictionVelocity(std::size_t i) const {
-        if (frictionVx) return {frictionVx[i], frictionVy[i], frictionVz[i]};
+        if (friction.x) return {friction.x[i], friction.y[i], friction.z[i]};
         return {particles.vx[i], particles.vy[i], particles.vz[i]};
     }
 };

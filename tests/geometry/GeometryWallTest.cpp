@@ -26,7 +26,7 @@ const std::vector<std::uint8_t> kMobile{0};
 WallCount reflectOnce(const GeometryWall& w, Particles& p, const Box& box, const PairRandom& random,
                       std::uint64_t step, double kT) {
     std::vector<DeferredCrossing> deferred;
-    WallStep s{p, kMobile, box, random, step, kT, 0.01, deferred};
+    WallStep s{p, kMobile, box, random, step, kT, 0.01, deferred, {}};
     const WallCount c = w.reflect(s, 0);
     EXPECT_TRUE(deferred.empty()) << "a geometry wall defers nothing";
     return c;
