@@ -3,8 +3,8 @@
 
 Reads the calibration (calibration/gammaL.dat: where the wall acts, each sector's gamma_L and the slip
 it gives), the sweeps (slipTensor's results per run: sweepAngle/, and at full size sweepGasFraction/,
-sweepLocalSlip/, sweepHeight/, sweepHalfForce/, sweepForce/, sweepPeriod/) and the fluid at rest over the stripes
-(rest/); computes the reference with stripedSlip at the calibrated slips in the channel between the
+sweepLocalSlip/, sweepHeight/, sweepHalfForce/, sweepForce/, sweepPeriod/) and the fluid at rest over
+the stripes (rest/); computes the reference with stripedSlip at the calibrated slips in the channel between the
 hydrodynamic walls; writes results.dat and stripedWall.png and exits non-zero when a check fails (the
 first fluid layer's speed and areal density at 0 and 90 degrees are written as information):
   - b_par and b_perp (mean of the walls, from the hydrodynamic wall) within max(3 standard errors, 5 %)
