@@ -129,6 +129,13 @@ def read_published(path):
     return out
 
 
+def walls_mean_slip(sweep):
+    """Per run of a sweep, the slip length of the two walls' mean and its standard error (a fluctuation
+    of the channel's mean velocity moves the two walls' slip in opposite directions and cancels here)."""
+    b = 0.5 * (np.asarray(sweep["slipLength_0"]) + np.asarray(sweep["slipLength_1"]))
+    return b, 0.5 * np.hypot(sweep["slipLengthError_0"], sweep["slipLengthError_1"])
+
+
 def compare_with_published(table, key, keys, measured, errors, quantity="slipLength", absolute=0.3, relative=0.30):
     """Each published row whose `key` matches one of `keys` beside the measured value: a list of
     (key, measured, error, published, tolerance, within) with tolerance max(absolute, relative x

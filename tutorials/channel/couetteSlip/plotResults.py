@@ -25,7 +25,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from dpdResults import compare_with_published, latest, published_checks, read_dict, read_published, read_sweep, read_table  # noqa: E402
+from dpdResults import (compare_with_published, latest, published_checks, read_dict, read_published, read_sweep,  # noqa: E402
+                        read_table, walls_mean_slip)
 
 TEST_MODE = "-test" in sys.argv[1:]
 VARIANTS = {"-noSlipWall": "the calibrated no-slip wall, gamma_fw 36",
@@ -83,13 +84,6 @@ def slab_means(z, values, errors, low, high, width):
             means.append(np.mean(values[sel]))
             errs.append(math.sqrt(np.sum(errors[sel] ** 2)) / sel.sum())
     return np.array(means), np.array(errs)
-
-
-def walls_mean_slip(sweep):
-    """The slip length of the two walls' mean and its error, per run of a sweep."""
-    b = np.vstack([sweep["slipLength_0"], sweep["slipLength_1"]]).T
-    b_err = np.vstack([sweep["slipLengthError_0"], sweep["slipLengthError_1"]]).T
-    return b.mean(axis=1), 0.5 * np.hypot(b_err[:, 0], b_err[:, 1])
 
 
 def accounted_by_wall_density(table, cutoff):

@@ -26,7 +26,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from dpdResults import compare_with_published, latest, published_checks, read_published, read_sweep, read_table  # noqa: E402
+from dpdResults import (compare_with_published, latest, published_checks, read_published, read_sweep,  # noqa: E402
+                        read_table, walls_mean_slip)
 
 TEST_MODE = "-test" in sys.argv[1:]
 PLANE_NEAR_ROW = "-planeNearRow" in sys.argv[1:]
@@ -46,13 +47,6 @@ def walls(path):
     with open(path) as f:
         zs = sorted(float(p) for p in re.findall(r"point\s*\(\s*\S+\s+\S+\s+(\S+)\s*\)", f.read()))
     return zs[0], zs[-1]
-
-
-def slip_mean(sweep):
-    """The mean of the two walls' slip lengths and its standard error."""
-    b = 0.5 * (sweep["slipLength_0"] + sweep["slipLength_1"])
-    err = 0.5 * np.hypot(sweep["slipLengthError_0"], sweep["slipLengthError_1"])
-    return b, err
 
 
 def monotonic_checks(label, gammas, b, err):
@@ -90,8 +84,8 @@ def main():
     sv = read_sweep("variants/sweep.dat")
     g2 = s2["pairCoeffs/fluid-wall/gamma"]
     g3 = s3["pairCoeffs/fluid-wall/gamma"]
-    b2, e2 = slip_mean(s2)
-    b3, e3 = slip_mean(s3)
+    b2, e2 = walls_mean_slip(s2)
+    b3, e3 = walls_mean_slip(s3)
     z_low, z_high = walls("constant/dpdProperties")
 
     # The same checks in both modes and both dimensions. The errors come from the fit block by block
@@ -188,7 +182,7 @@ def accounted_by_plane_depth(published):
     if not os.path.exists("sweepPlaneNearRow/sweep.dat"):
         return ingredient, [], how
     sv = read_sweep("sweepPlaneNearRow/sweep.dat")
-    return ingredient, published_comparison(published, sv["pairCoeffs/fluid-wall/gamma"], *slip_mean(sv)), how
+    return ingredient, published_comparison(published, sv["pairCoeffs/fluid-wall/gamma"], *walls_mean_slip(sv)), how
 
 
 def write_comparison(f, published, comparison):
@@ -203,7 +197,7 @@ def main_plane_near_row():
     """The named variant: its sweep against the paper, with the published wall's runs beside it."""
     sv = read_sweep("sweepPlaneNearRow/sweep.dat")
     gv = sv["pairCoeffs/fluid-wall/gamma"]
-    bv, ev = slip_mean(sv)
+    bv, ev = walls_mean_slip(sv)
     z_low, z_high = walls("constant/dpdProperties")
     published = read_published("published.dat")
     comparison = published_comparison(published, gv, bv, ev)
@@ -228,7 +222,7 @@ def main_plane_near_row():
     ax[0].errorbar(gv, bv, yerr=ev, fmt="o-", label="rows 0.14 / 0.717 behind the plane (variant)")
     if os.path.exists("sweep2D/sweep.dat"):
         s2 = read_sweep("sweep2D/sweep.dat")
-        b2, e2 = slip_mean(s2)
+        b2, e2 = walls_mean_slip(s2)
         ax[0].errorbar(s2["pairCoeffs/fluid-wall/gamma"], b2, yerr=e2, fmt="s--", label="rows 0.289 / 0.866 (published wall)")
     draw_published_slip(ax[0], published)
     draw_profiles(ax[1], "sweepPlaneNearRow", sv["case"], gv)
