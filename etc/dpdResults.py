@@ -6,6 +6,7 @@
 import glob
 import os
 import re
+import subprocess
 import sys
 
 import numpy as np
@@ -25,6 +26,12 @@ def read_table(path):
         header = f.readline().lstrip("#").split()
     data = np.loadtxt(path, comments="#", ndmin=2)
     return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def dictionary_value(path, entry):
+    """An entry of a case dictionary (controlDict, dpdProperties) as dpdDictionary prints it."""
+    out = subprocess.run(["dpdDictionary", path, "-entry", entry, "-value"], check=True, capture_output=True, text=True)
+    return out.stdout.strip().rstrip(";")
 
 
 def read_dict(path):
