@@ -9,9 +9,9 @@ the mobile particles of a slab, with dv = v - u(z) the velocity about the mean p
 each particle (which removes the mean shear):
     single      <dv^2> / D                        the bins' kT (D active axes)
     pair        <|dv_i - dv_j|^2> / (2 D)         over pairs closer than r_c: the heat
-    correlated  <dv_i . dv_j> / D                 over the same pairs: the motion neighbours share
-For velocities uncorrelated between particles at a common kT, pair = single = kT and correlated = 0
-(canonical momenta factorise); motion shared by neighbours raises single and correlated alike and
+    shared      <dv_i . dv_j> / D                 over the same pairs: the motion neighbours share
+For velocities uncorrelated between particles at a common kT, pair = single = kT and shared = 0
+(canonical momenta factorise); motion shared by neighbours raises single and shared alike and
 cancels in pair.
 
 As a command, for the sampled window of a case's binnedProfile function (its axis, range and start
