@@ -43,21 +43,16 @@ def snapshot_times(case, start, end):
     return sorted(times)
 
 
-def read_mobile(path, species=None):
-    """Positions, velocities and species of the mobile particles of a snapshot, and its box and dimension.
-    species: names to keep (all mobile ones if None)."""
+def read_mobile(path):
+    """Positions and velocities of the mobile particles of a snapshot, and its box and dimension."""
     with h5py.File(path, "r") as f:
-        names = [n.decode() if isinstance(n, bytes) else str(n) for n in f.attrs["speciesNames"]]
         frozen = np.asarray(f.attrs["speciesFrozen"]) != 0
         lo, hi = np.asarray(f.attrs["boxLo"], float), np.asarray(f.attrs["boxHi"], float)
         dimension = int(f.attrs["dimension"])
-        s = np.asarray(f["particles/species"])
-        keep = ~frozen[s]
-        if species is not None:
-            keep &= np.isin(s, [names.index(n) for n in species])
+        keep = ~frozen[np.asarray(f["particles/species"])]
         x = np.asarray(f["particles/position"])[keep]
         v = np.asarray(f["particles/velocity"])[keep]
-    return x, v, s[keep], lo, hi, dimension
+    return x, v, lo, hi, dimension
 
 
 def mean_profile(snapshots, axis, lo, hi, n_bins):
@@ -76,7 +71,7 @@ def mean_profile(snapshots, axis, lo, hi, n_bins):
 
 
 def snapshot_temperatures(x, v, profile, axis, region, box_lo, box_hi, dimension, cutoff=1.0):
-    """single, pair and correlated kT (module docstring) of one snapshot's particles whose coordinate
+    """single, pair and shared kT (module docstring) of one snapshot's particles whose coordinate
     along `axis` lies in region = (lo, hi); pairs with both particles in it."""
     centres, u = profile
     good = np.all(np.isfinite(u), axis=1)
@@ -94,21 +89,21 @@ def snapshot_temperatures(x, v, profile, axis, region, box_lo, box_hi, dimension
     dva = dv[:, active]
     single = float(np.mean(np.sum(dva[inside] ** 2, axis=1)) / d)
     pair = float(np.mean(np.sum((dva[i] - dva[j]) ** 2, axis=1)) / (2.0 * d))
-    correlated = float(np.mean(np.sum(dva[i] * dva[j], axis=1)) / d)
-    return single, pair, correlated
+    shared = float(np.mean(np.sum(dva[i] * dva[j], axis=1)) / d)
+    return single, pair, shared
 
 
-def pair_temperature(case, start, end, axis, region, profile_range, n_bins, species=None, cutoff=1.0):
-    """Per snapshot of `case` in [start, end]: (time, single, pair, correlated) in the slab `region`
+def pair_temperature(case, start, end, axis, region, profile_range, n_bins, cutoff=1.0):
+    """Per snapshot of `case` in [start, end]: (time, single, pair, shared) in the slab `region`
     along `axis`, about the mean profile over those snapshots in n_bins bins over profile_range.
     Returns an array (snapshots, 4)."""
     found = snapshot_times(case, start, end)
     if not found:
         raise RuntimeError(f"pair_temperature: no snapshot of {case} in [{start:g}, {end:g}]")
-    data = [(t,) + read_mobile(path, species) for t, path in found]
+    data = [(t,) + read_mobile(path) for t, path in found]
     profile = mean_profile([(x, v) for _, x, v, *_ in data], axis, profile_range[0], profile_range[1], n_bins)
     rows = []
-    for t, x, v, _, lo, hi, dimension in data:
+    for t, x, v, lo, hi, dimension in data:
         rows.append((t,) + snapshot_temperatures(x, v, profile, axis, region, lo, hi, dimension, cutoff))
     return np.array(rows)
 
