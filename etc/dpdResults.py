@@ -97,6 +97,29 @@ def read_blocks(path):
     }
 
 
+def kT_against_shear(periodic, g, nu):
+    """kT against the local shear rate in the periodic box without walls (a tutorial's viscosity/ case).
+
+    DPD heats a sheared fluid: the work eta shear^2 is taken out by the pair thermostat only once the
+    fluid is warmer than the set kT, and the thermostat relaxes fast enough (a rate of a few per unit
+    time against heat diffusion over about one cutoff) for kT to follow the local shear rate. The
+    periodic reverse-Poiseuille box covers the same shear rates as the channel (0 at its velocity
+    extremes to g L / (4 nu) at the half boundaries, as 0 at the centre to g d / (2 nu) at the walls)
+    with no wall to take heat away, so it measures kT(shear) for this fluid. Returns (shear, kT)
+    sorted by shear, averaged over the four quarter-periods.
+    """
+    z, kT = periodic["z"], periodic["kT"]
+    lo = z[0] - 0.5 * (z[1] - z[0])
+    length = (z[1] - z[0]) * len(z)
+    # Distance to the nearest velocity extreme, at a quarter and three quarters of the box.
+    x = np.minimum(np.abs(z - (lo + 0.25 * length)), np.abs(z - (lo + 0.75 * length)))
+    edges = np.linspace(0.0, 0.25 * length, 21)
+    which = np.clip(np.digitize(x, edges) - 1, 0, len(edges) - 2)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    means = np.array([np.mean(kT[which == k]) for k in range(len(centres))])
+    return g * centres / nu, means
+
+
 def read_published(path):
     """A tutorial's published.dat: {"source", "scene", "parameters": [(file, entry, value)],
     "tables": {name: {column: array}}, "fits": {quantity: (variable, function of a)}}."""
@@ -124,6 +147,8 @@ def read_published(path):
                 if len(values) != len(table["columns"]):
                     sys.exit(f"{path}:{number}: {len(values)} values for {len(table['columns'])} columns")
                 table["rows"].append(values)
+            elif key == "count":
+                continue  # a builder's particle count: etc/checkPublishedCounts reads it
             elif key == "fit":
                 name, expression = rest.split(None, 1)
                 quantity, variable = name.split(":")

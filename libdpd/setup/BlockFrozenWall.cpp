@@ -41,6 +41,18 @@ FrozenLatticeSettings readLattice(const Dictionary& wd, const DpdModel& model) {
     return s;
 }
 
+// The lattice points a fluid particle can reach: a wall whose rule returns the fluid at its plane keeps
+// it in front, so a point deeper than one cutoff behind the plane never meets it (docs/walls.md 3.1).
+// With rule none the fluid may enter the solid, and every point is kept.
+std::vector<Eigen::Vector3d> withinReachOfFluid(std::vector<Eigen::Vector3d> points, const PlanarWallSettings& w,
+                                                double cutoff) {
+    if (w.rule == ReflectionRule::none) return points;
+    points.erase(std::remove_if(points.begin(), points.end(),
+                                [&](const Eigen::Vector3d& r) { return -w.signedDistance(r.x(), r.y(), r.z()) >= cutoff; }),
+                 points.end());
+    return points;
+}
+
 }  // namespace
 
 Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockFrozenWallReport& report) {
@@ -96,6 +108,8 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
             } catch (const std::invalid_argument& e) {
                 wd.fail("lattice", e.what());
             }
+            report.latticePerWall.push_back(points.size());
+            points = withinReachOfFluid(std::move(points), *w, model.cutoff);
             for (const auto& r : points)
                 snap.particles.add(snap.particles.size(), wallSpecies, r.x(), r.y(), r.z(), w->velocity.x(),
                                    w->velocity.y(), w->velocity.z());

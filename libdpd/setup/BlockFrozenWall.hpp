@@ -9,7 +9,9 @@
 //       species   wall;
 //       lattice   fcc;          // fcc | simpleCubic | layers
 //       density   4;            // fcc, simpleCubic
-//       thickness 1;            // depth filled behind each wall; default one cutoff
+//       thickness 1;            // depth of the lattice behind each wall; default one cutoff. Points
+//                               // deeper than one cutoff are left out (they never meet the fluid)
+//                               // unless the wall's reflection is none
 //       layers    (0.15 0.35 0.75);   // layers only: depths behind the wall
 //       spacing   (0.5 1);            // layers only: in-plane spacing per in-plane axis
 //   }
@@ -29,7 +31,8 @@ struct DpdModel;
 
 struct BlockFrozenWallReport {
     std::size_t fluid = 0;
-    std::vector<std::size_t> frozenPerWall;
+    std::vector<std::size_t> frozenPerWall;   // built: within one cutoff of the fluid
+    std::vector<std::size_t> latticePerWall;  // the lattice over the whole thickness
     std::vector<std::string> wallNames;
     double fluidVolume = 0.0;
     InitialFlow initialFlow;

@@ -47,7 +47,7 @@ EOD
 
 # checkParabola CASE BETA: the cell values equal the Navier-slip parabola
 # g/(2 nu) [(z - a)(b - z) + beta d] shifted by g h^2 / (8 nu) (the half-cell wall gradient: see
-# tutorials/channel/poiseuille/plotCompareFVM.py), to 1e-8 of the centre velocity.
+# tutorials/channel/poiseuille/latticeWall/plotCompareFVM.py), to 1e-8 of the centre velocity.
 checkParabola() {
     "$py" - "$1" "$2" <<'EOD'
 import os, re, sys

@@ -159,13 +159,13 @@ grep -q "type DPDVV;" "$vv/constant/dpdProperties" || fail "the DPD-VV case was 
 controlDict "$vv" 6 ""
 compareRuns dpdvv "$vv" 6
 
-# 3b. A wall of any shape: the poiseuille tutorial's random wall from an image mask (bounce layer on
-#     the geometry's surface, frozen particles from randomEquilWall, whose equilibration also runs on
-#     3 ranks), 10 planes, on 2 and 3 ranks.
+# 3b. A wall of any shape: the random wall of the poiseuille tutorial's lattice-wall variant, from an
+#     image mask (bounce layer on the geometry's surface, frozen particles from randomEquilWall, whose
+#     equilibration also runs on 3 ranks), 10 planes, on 2 and 3 ranks.
 geo=$work/geometry
 mkdir -p "$geo"
-cp -r "$src/tutorials/channel/poiseuille/system" "$src/tutorials/channel/poiseuille/randomWalls" \
-      "$src/tutorials/channel/poiseuille/randomMask" "$geo/"
+cp -r "$src/tutorials/channel/poiseuille/latticeWall/system" "$src/tutorials/channel/poiseuille/latticeWall/randomWalls" \
+      "$src/tutorials/channel/poiseuille/latticeWall/randomMask" "$geo/"
 (
     cd "$geo" || exit 1
     set_() { "$bin/dpdDictionary" "$1" -entry "$2" -set "$3" > /dev/null || echo "FAIL: dpdDictionary $1 $2"; }

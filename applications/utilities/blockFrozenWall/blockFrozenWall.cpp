@@ -25,7 +25,13 @@ int main(int argc, char** argv) {
                       << (flow.type == dpd::InitialFlow::Type::poiseuille ? "Poiseuille" : "reverse Poiseuille")
                       << " for nu " << flow.nu << "\n";
         for (std::size_t k = 0; k < report.wallNames.size(); ++k)
-            std::cout << "Wall " << report.wallNames[k] << " : " << report.frozenPerWall[k] << " frozen particles\n";
+        {
+            std::cout << "Wall " << report.wallNames[k] << " : " << report.frozenPerWall[k] << " frozen particles";
+            if (report.latticePerWall[k] != report.frozenPerWall[k])
+                std::cout << " (" << report.latticePerWall[k]
+                          << " in the lattice's thickness; those deeper than one cutoff never meet the fluid)";
+            std::cout << "\n";
+        }
         std::cout << "Written " << (caseDir / "0" / "particles.h5").string() << "\nEnd\n";
     });
 }

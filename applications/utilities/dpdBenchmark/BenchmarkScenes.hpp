@@ -1,6 +1,6 @@
 #pragma once
 // The scenes dpdBenchmark times: the standard DPD fluid in a periodic box, the same with chains, and a channel between
-// frozen fcc walls with bounce-back (the set-up of tutorials/channel/poiseuille, scaled to the
+// frozen fcc walls with bounce-back (the FCC walls of tutorials/channel/poiseuille/fcc, bounce-back in place of their bounce layer, scaled to the
 // particle count), sampled every step by a binned profile as a run would be.
 #include "system/System.hpp"
 #include "sampling/FunctionObjects.hpp"
