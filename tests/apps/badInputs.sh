@@ -11,7 +11,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 . "$src/tests/shellTestFunctions" || exit 1
 python=/usr/bin/python3
-"$python" -c 'import h5py, numpy' 2>/dev/null || python=""
+# The snapshot edits and health checks need them: required dependencies, so missing fails (no skip).
+requirePython "$python" h5py numpy || finishTests badInputs
 
 # A small channel: walls at z = -3 and 3, fluid between, frozen lattice walls behind.
 makeCase() {
@@ -57,17 +58,13 @@ run hugeEndTime 'sed -i "s/^endTime 0.2;/endTime 1e30;/" system/controlDict' "sy
 # Snapshots.
 run truncatedSnapshot 'head -c 3000 0/particles.h5 > x && mv x 0/particles.h5' "0/particles.h5"
 run garbageSnapshot 'head -c 30000 /dev/urandom > 0/particles.h5' "0/particles.h5" "HDF5"
-if [ -n "$python" ]; then
-    edit() { echo "$python -c \"import h5py; f = h5py.File('0/particles.h5', 'r+'); $1\""; }
-    run farParticle "$(edit "f['particles/position'][5, 2] = 1e6")" "0/particles.h5" "'particles/position' row 5" \
-        "more than one box length outside"
-    run nanVelocity "$(edit "f['particles/velocity'][7, 0] = float('nan')")" "'particles/velocity' row 7" "not a finite"
-    run particleInWall "$(edit "import numpy as np; s = f['particles/species'][()]; i = int(np.flatnonzero(s == 0)[0]); f['particles/position'][i, 2] = -3.5")" \
-        "0/particles.h5" "inside the solid of wall 'lower'"
-    run repeatedId "$(edit "f['particles/id'][9] = f['particles/id'][2]")" "'particles/id'" "rows 2 and 9"
-else
-    echo "h5py not available: the snapshot edits are skipped"
-fi
+edit() { echo "$python -c \"import h5py; f = h5py.File('0/particles.h5', 'r+'); $1\""; }
+run farParticle "$(edit "f['particles/position'][5, 2] = 1e6")" "0/particles.h5" "'particles/position' row 5" \
+    "more than one box length outside"
+run nanVelocity "$(edit "f['particles/velocity'][7, 0] = float('nan')")" "'particles/velocity' row 7" "not a finite"
+run particleInWall "$(edit "import numpy as np; s = f['particles/species'][()]; i = int(np.flatnonzero(s == 0)[0]); f['particles/position'][i, 2] = -3.5")" \
+    "0/particles.h5" "inside the solid of wall 'lower'"
+run repeatedId "$(edit "f['particles/id'][9] = f['particles/id'][2]")" "'particles/id'" "rows 2 and 9"
 
 # A keyword given twice runs, with a warning naming both lines as the log's first line.
 c=$work/repeated
@@ -94,13 +91,11 @@ for t in "$c"/[0-9]*; do
     name=$(basename "$t")
     sed -i "s/^startTime .*//; s/^endTime .*/endTime $name;\nstartTime $name;/" "$c/system/controlDict"
     "$bin/dpdFoamLike" -case "$c" > "$c/log.read" 2>&1 || fail "time $name left behind cannot be read: $(tail -3 "$c/log.read")"
-    if [ -n "$python" ]; then
-        "$python" -c "
+    "$python" -c "
 import h5py, sys
 v = h5py.File('$t/particles.h5', 'r')['particles/velocity'][()]
 kT = ((v - v.mean(axis=0))**2).sum() / (3 * (len(v) - 1))
 sys.exit(0 if kT < 2 else 'kT %g' % kT)" || fail "time $name left behind is not healthy"
-    fi
 done
 
 finishTests badInputs

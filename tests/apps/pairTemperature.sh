@@ -14,7 +14,8 @@ set -u
 src=$2
 . "$src/tests/shellTestFunctions" || exit 1
 python=/usr/bin/python3
-"$python" -c 'import numpy, h5py, scipy' 2>/dev/null || { echo "SKIP: no numpy, h5py or scipy for $python"; exit 0; }
+# Required dependencies: a missing one fails the test (no skip).
+requirePython "$python" numpy h5py scipy || finishTests pairTemperature
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

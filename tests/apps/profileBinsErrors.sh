@@ -53,6 +53,8 @@ if "$bin/profileBins" -case "$c" -snapshot -latestTime > "$work/log" 2>&1; then
     [ "$(head -1 "$table")" = "# z density densityErr ux uxErr uy uyErr uz uzErr kT kTErr count" ] ||
         fail "unexpected header in $table: $(head -1 "$table")"
     [ "$(grep -vc '^#' "$table")" -eq 16 ] || fail "$table should have 16 rows"
+    # Every column a finite number: the checks below read only the density and error columns.
+    finiteRows "$table"
     awk '!/^#/ && ($3 != 0 || $5 != 0) { bad = 1 } END { exit bad }' "$table" || fail "$table: error columns not 0"
     awk '!/^#/ && ($2 < 2 || $2 > 6) { bad = 1 } END { exit bad }' "$table" || fail "$table: implausible densities"
 else

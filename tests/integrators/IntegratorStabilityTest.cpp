@@ -16,9 +16,9 @@
 //   Monitor trips (kT > 2 within 10 time units): Euler 0.015, GW 0.12, DPD-VV 0.13, Shardlow 0.13.
 //
 // Tolerances. The measured mean has a block standard error, divided by the fraction of the true
-// standard error that blocks of that length capture. That fraction was measured for the 3-D fluid of
-// run/EquilibriumTest.cpp (L = 7.9): 0.86 for blocks of 3 time units, 0.92 for 6, 1 from 20. Its
-// slowest kT relaxation is that of the longest shear modes, whose time scales as L^2; this box
+// standard error that blocks of that length capture. That fraction was measured for the 3-D fluid
+// of tests/system/EquilibriumTest.cpp (L = 7.9): 0.86 for blocks of 3 time units, 0.92 for 6, 1 from
+// 20. Its slowest kT relaxation is that of the longest shear modes, whose time scales as L^2; this box
 // (L = 6) relaxes (6 / 7.9)^2 = 0.58 times faster, so blocks of 8 time units here are like blocks of
 // 14 there (fraction > 0.92; 0.9 is used) and blocks of 2 like blocks of 3.5 (0.86; 0.85 is used).
 // `holds` takes a step whose measured error is at most 0.9 % and requires |<kT> - 1| < 2 %: the 1.1 %
@@ -147,9 +147,10 @@ INSTANTIATE_TEST_SUITE_P(
 // Without a conservative force Shardlow's splitting is exact in kT at any step: each pair update
 // maps the Maxwell distribution of the pair's relative velocity onto itself (the exact Ornstein-
 // Uhlenbeck solution with Gaussian noise), and free flight leaves velocities alone. So an ideal DPD
-// gas (a = 0, gamma 4.5) at dt 0.2 (gamma dt = 0.9) keeps kT = 1 with no bias at all: |<kT> - 1| <
-// 4 SE (400 time units in 20 blocks: SE ~0.0016, measured spread over four seeds 0.0024). Groot-
-// Warren at the same step, whose dissipative force lags, is held to its visible excess (+0.39).
+// gas (a = 0, gamma 4.5) at dt 0.2 (gamma dt = 0.9) keeps kT = 1 with no bias at all. 400 time units
+// in 20 blocks give an SE of ~0.0016 (measured spread over four seeds 0.0024): the SE must lie within
+// a budget of 0.003, then Shardlow's |<kT> - 1| within 4 budgets, 0.012, fixed. Groot-Warren at the
+// same step, whose dissipative force lags, must lie beyond that bound (its excess is +0.39).
 TEST(IntegratorStabilityIdealGas, ShardlowIsExactAtLargeStepsWithoutConservativeForce) {
     StandardFluidSettings s;
     s.particles = 648;

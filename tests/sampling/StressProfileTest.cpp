@@ -1,7 +1,8 @@
 // The stress profile (sampling/PairVirial.*, BinProfile): the Irving-Kirkwood shares of a pair
 // segment, the binned virial against a direct sum over all pairs, the pressure of the equilibrium
-// fluid against the Groot-Warren equation of state, and the shear stress of periodic Poiseuille flow
-// against the exact momentum balance sigma_xz(z) = -rho g (z - z_c).
+// fluid against an accurate reference for its state point (Groot-Warren's equation of state printed
+// beside it), and the shear stress of periodic Poiseuille flow against the exact momentum balance
+// sigma_xz(z) = -rho g (z - z_c).
 #include "forces/ReversePoiseuilleBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
@@ -217,9 +218,9 @@ Estimate blockMeanOverBins(const BinAccumulator& acc, double crossSection, doubl
 }  // namespace
 
 // Equilibrium fluid rho = 3, a = 25, gamma = 4.5, kT = 1, dt = 0.01 (Groot-Warren, whose kT bias at
-// this step is below 0.001: tests/run/EquilibriumTest.cpp). The pressure, kinetic plus virial, averaged
-// over the bins, against the accurate reference p = 23.636 +- 0.002 for this state point (Allen &
-// Tildesley's DPD examples, Lowe and Shardlow thermostats, which have no time-step bias in kT:
+// this step is below 0.001: tests/system/EquilibriumTest.cpp). The pressure, kinetic plus virial,
+// averaged over the bins, against the accurate reference p = 23.636 +- 0.002 for this state point
+// (Allen & Tildesley's DPD examples, Lowe and Shardlow thermostats, which have no time-step bias in kT:
 // 23.637(2) and 23.635(2); the improved equation of state of Liyana-Arachchi et al. 2015 gives 23.59).
 // The measured kT differs from 1 by the integrator's small bias; the kinetic part rho (kT - 1) is
 // added to the reference, and as much again allowed for the virial's weaker temperature dependence.
