@@ -9,7 +9,8 @@
 // particles gives up at most ~1.7x on tiny systems on an idle machine (which run in seconds) for
 // runs that do not collapse when the machine is shared. Results do not depend on the thread count
 // (counter-based random numbers, fixed reduction order), so the choice costs nothing but time.
-// OMP_NUM_THREADS still sets how many are available.
+// OMP_NUM_THREADS still sets how many are available; DPD_PARTICLES_PER_THREAD replaces the 4000, for a
+// test that must run several threads on a small system.
 #include <cstddef>
 
 namespace dpd {
@@ -17,12 +18,17 @@ namespace dpd {
 // The fewest particles per thread worth another thread (benchmark: dpdBenchmark -n 2000,4000,...).
 constexpr std::size_t kParticlesPerThread = 4000;
 
-// min(available, max(1, particles / kParticlesPerThread)).
-int threadsForParticles(std::size_t particles, int available);
+// kParticlesPerThread, or the environment's DPD_PARTICLES_PER_THREAD (a positive integer). Throws
+// std::invalid_argument naming the variable for any other value.
+std::size_t particlesPerThread();
+
+// min(available, max(1, particles / perThread)).
+int threadsForParticles(std::size_t particles, int available, std::size_t perThread = kParticlesPerThread);
 
 struct ThreadUse {
     int available = 1;   // OpenMP's maximum before the call
     int used = 1;        // what the run uses
+    std::size_t perThread = kParticlesPerThread;  // the particles a thread was worth
 };
 
 // Sets the OpenMP thread count for a run of that many particles. It only ever lowers the count (what

@@ -127,7 +127,7 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
         log << "Ranks          : " << sys.domain()->communicator().size() << ", slabs of cell planes along x "
             << sys.domain()->slabs().describe() << " (of " << sys.domain()->slabs().planes() << ")\n";
     log << "Threads        : " << threads.used << " of " << threads.available << (sys.domain() ? " on the first rank" : "")
-        << (threads.used < threads.available ? " (fewer particles than " + std::to_string(kParticlesPerThread) +
+        << (threads.used < threads.available ? " (fewer particles than " + std::to_string(threads.perThread) +
                                                    " per thread: more would wait on each other)"
                                              : std::string())
         << "\n"

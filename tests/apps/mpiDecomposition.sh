@@ -59,14 +59,22 @@ EOD
 sameSnapshot() { compareFiles exact "$1" "$2"; }
 sameSampling() { compareFiles sums "$1" "$2"; }
 
-# Runs case $1 on $2 ranks (0: no mpirun) with $3 threads; the log in $1/log.
+# Runs case $1 on $2 ranks (0: no mpirun) with $3 threads; the log in $1/log. These scenes hold a few
+# thousand particles, fewer than the thread budget gives a second thread (core/ThreadBudget.hpp):
+# DPD_PARTICLES_PER_THREAD=1 makes every rank use the threads asked for, and the log must say so.
+# Passive waiting: more threads than cores, whose spinning would starve the others.
 run() {
-    local c=$1 ranks=$2 threads=$3
+    local c=$1 ranks=$2 threads=$3 status
+    export DPD_PARTICLES_PER_THREAD=1 OMP_WAIT_POLICY=passive
     if [ "$ranks" = 0 ]; then
         OMP_NUM_THREADS=$threads "$bin/dpdFoamLike" -case "$c" > "$c/log" 2>&1
     else
         OMP_NUM_THREADS=$threads "${mpirun[@]}" -np "$ranks" "$bin/dpdFoamLike" -case "$c" > "$c/log" 2>&1
     fi
+    status=$?
+    [ $status -ne 0 ] || grep -q "^Threads *: $threads of $threads" "$c/log" ||
+        { fail "$c ran on $(sed -n 's/^Threads *: //p' "$c/log" | head -n 1), not $threads threads"; return 1; }
+    return $status
 }
 
 controlDict() {  # $1 case, $2 endTime, $3 extra entries
