@@ -10,7 +10,7 @@
 # of fitSlipLength's reversePoiseuille nu must lie within 2 % of each, after its standard error is
 # found within a third of that, 0.67 % (one run's error is ~0.9 %: 2,000 time units hold few decay
 # times of the box's slow modes; three runs make it ~0.5 %). A long test (ctest label long;
-# ./Alltest -long and CI run it): about twelve minutes on two cores.
+# ./Alltest -long and CI run it): about a quarter of an hour on two cores (rho 3 runs on one thread).
 #   $1: the directory of the executables, $2: the source directory
 set -u
 bin=$1

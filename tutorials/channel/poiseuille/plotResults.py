@@ -85,7 +85,7 @@ class SeedRun:
             "slip": 0.5 * sum(self.fit["slipLength"]),  # the two walls' mean: their slip is one property
             "rhoNear": np.mean(rho[near]) / bulk_rho,
             "rhoFirst": np.mean([rho[np.argmin(np.where(side, dist, np.inf))] for side in (z < centre, z > centre)]) / bulk_rho,
-            "kTNear": np.mean(kT[near]),
+            "kTNear": np.average(kT[near], weights=self.table["count"][near]),  # empty bins read kT 0
             "kTBulkVsNoWall": np.average(kT[bulk] - np.interp(shear[bulk], *kT_of_shear), weights=self.table["count"][bulk]),
             "returned": returned / (span * area),
             "crossed": crossed / (span * area),
