@@ -53,8 +53,8 @@ mode reversePoiseuille; profile profile; component x; exclude 1;
 EOD
 }
 
-# fitSlipLength's nu and its error in case $1.
-fitted() { sed -n "s/^$2  *\([^;]*\);.*/\1/p" "$(ls "$1"/postProcessing/fitSlipLength/*/fit.dat | tail -n 1)"; }
+# Entry $2 of case $1's latest fit.dat, read by the project's dictionary reader.
+fitted() { "$bin/dpdDictionary" "$(ls "$1"/postProcessing/fitSlipLength/*/fit.dat | tail -n 1)" -entry "$2" -value 2>/dev/null; }
 
 # Runs case $1 through the tools; its log files beside.
 runCase() {
