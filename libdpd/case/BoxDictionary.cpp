@@ -17,8 +17,8 @@ Box readBoxDictionary(const Dictionary& d, int dimension, double cutoff) {
     if (dimension == 2) { box.lo.y() = -0.5; box.hi.y() = 0.5; }  // nominal: the y axis is inactive
     for (int a = 0; a < 3; ++a) {
         if (!box.isActiveAxis(a)) continue;
-        if (!(box.hi[a] - box.lo[a] >= 3.0 * cutoff))
-            bd.fail("max", std::string("the box must be at least three cutoffs long along ") + axisLetter(a));
+        if (!(box.hi[a] - box.lo[a] >= 2.0 * cutoff))
+            bd.fail("max", std::string("the box must be at least two cutoffs long along ") + axisLetter(a));
     }
     return box;
 }

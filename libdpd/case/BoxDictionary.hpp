@@ -8,7 +8,7 @@ namespace dpd {
 class Dictionary;
 
 // Reads d's `box` sub-dictionary. In 2-D the y axis is inactive and gets a nominal unit extent.
-// Every active axis must be at least three cutoffs long (the cell list's minimum); otherwise an
+// Every active axis must be at least two cutoffs long (the cell list's minimum); otherwise an
 // InputError names the file, line and keyword.
 Box readBoxDictionary(const Dictionary& d, int dimension, double cutoff);
 

@@ -57,8 +57,10 @@ void CellList::setup(const Box& box, double cutoff) {
             continue;
         }
         n_[a] = static_cast<int>(std::floor(L[a] / cutoff));
-        if (n_[a] < 3)
-            throw std::invalid_argument("the box must be at least three cutoffs long along axis " +
+        // Two cells suffice: the stencil's offsets -1 and +1 then reach the same cell as two images,
+        // of which at most one lies within the cutoff when the box is two cutoffs long.
+        if (n_[a] < 2)
+            throw std::invalid_argument("the box must be at least two cutoffs long along axis " +
                                         std::string(axisLetter(a)) + " (it is " + std::to_string(L[a]) + ")");
         size_[a] = L[a] / n_[a];
         invSize_[a] = 1.0 / size_[a];

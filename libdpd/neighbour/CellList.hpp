@@ -29,7 +29,9 @@ enum class SortForces { Move, Leave };
 class CellList {
 public:
     // Lays out the grid for a box and cutoff. Throws std::invalid_argument if an active axis has fewer
-    // than three cells (the half stencil would then meet the same neighbour twice).
+    // than two cells (a box under two cutoffs long, where a pair could meet within the cutoff twice).
+    // With two cells along an axis the stencil reaches the neighbouring cell twice, through its two
+    // images, which the pair loop's cell offsets tell apart.
     void setup(const Box& box, double cutoff);
     // Wraps the positions into the box, reorders the particles by cell and records where each cell
     // starts. Every particle counts as mobile.

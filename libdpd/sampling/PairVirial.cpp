@@ -103,8 +103,8 @@ void cellPairVirial(const VirialScene& scene, const BinLayout& L, const Evaluato
 }
 
 // The pairs of the particles that moved after the sort (`movedIndices`, increasing), whose cells no
-// longer fit them: with every particle of the 27 cells around where each is now (the others lie in
-// the cells the sort gave them), and with each other. The nearest image of each pair.
+// longer fit them: with every particle of the (up to 27) cells around where each is now (the others
+// lie in the cells the sort gave them), and with each other. The nearest image of each pair.
 template <class Evaluator>
 void movedPairVirial(const VirialScene& scene, const BinLayout& L, const Evaluator& eval,
                      const std::vector<std::uint32_t>& movedIndices, std::vector<SymmetricTensor>& bins) {
@@ -119,14 +119,21 @@ void movedPairVirial(const VirialScene& scene, const BinLayout& L, const Evaluat
         return rj;
     };
     const auto wrappedCell = [](int c, int count) { return ((c % count) + count) % count; };
+    // The distinct cells around along each axis: offsets -1..1, or 0..1 where two cells make -1 and
+    // +1 the same one (the nearest image then picks the side), or 0 alone along an inactive axis.
+    std::array<int, 3> firstOffset{}, lastOffset{};
+    for (int a = 0; a < 3; ++a) {
+        firstOffset[a] = n[a] > 2 ? -1 : 0;
+        lastOffset[a] = n[a] > 1 ? 1 : 0;
+    }
     for (std::size_t k = 0; k < movedIndices.size(); ++k) {
         const std::uint32_t i = movedIndices[k];
         const Eigen::Vector3d ri(p.rx[i], p.ry[i], p.rz[i]);
         std::array<int, 3> home{};
         for (int a = 0; a < 3; ++a) home[a] = cl.axisCell(box.wrap(ri[a], a), a);
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = n[1] > 1 ? -1 : 0; dy <= (n[1] > 1 ? 1 : 0); ++dy)
-                for (int dz = -1; dz <= 1; ++dz) {
+        for (int dx = firstOffset[0]; dx <= lastOffset[0]; ++dx)
+            for (int dy = firstOffset[1]; dy <= lastOffset[1]; ++dy)
+                for (int dz = firstOffset[2]; dz <= lastOffset[2]; ++dz) {
                     const int c = cl.cellIndex(wrappedCell(home[0] + dx, n[0]), wrappedCell(home[1] + dy, n[1]),
                                                wrappedCell(home[2] + dz, n[2]));
                     for (std::uint32_t j = cl.cellStart(c); j < cl.cellStart(c + 1); ++j)

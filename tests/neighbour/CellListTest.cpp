@@ -249,29 +249,43 @@ TEST(CellList, PairsMatchBruteForce2D) {
     checkCase({"2-D 9x3 cells", 2, Eigen::Vector3d(1.0, -0.5, -3.0), Eigen::Vector3d(10.7, 0.5, 0.2), 1.0});
 }
 
-TEST(CellList, SetupThrowsForBoxesShorterThanThreeCutoffs) {
+TEST(CellList, PairsMatchBruteForceWithTwoCellsAlongAnAxis) {
+    // Two cells along an axis: the stencil reaches the other cell through both its images (offsets -1
+    // and +1), each pair within the cutoff through one of them only. A thin periodic slab (scene 6 of
+    // docs/scenes.md is 2 cutoffs thick), then two cells along x and z, along all three axes, in 2-D,
+    // and a box of exactly two cutoffs.
+    checkCase({"4x2x5 cells", 3, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(4.3, 2.4, 5.5), 1.0});
+    checkCase({"2x3x2 cells", 3, Eigen::Vector3d(-1.0, 0.5, 2.0), Eigen::Vector3d(1.5, 4.1, 4.2), 1.0});
+    checkCase({"2x2x2 cells", 3, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2.7, 2.3, 2.9), 1.0});
+    checkCase({"2-D 2x5 cells", 2, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2.5, 1.0, 5.4), 1.0});
+    checkCase({"4x2x4 cells of exactly one cutoff along y", 3, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(4.5, 2.0, 4.7),
+               1.0});
+}
+
+TEST(CellList, SetupThrowsForBoxesShorterThanTwoCutoffs) {
     CellList cells;
     Box box;
     box.lo = Eigen::Vector3d(0, 0, 0);
-    box.hi = Eigen::Vector3d(2.99, 5, 5);
+    box.hi = Eigen::Vector3d(1.99, 5, 5);
     EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
-    box.hi = Eigen::Vector3d(5, 2.99, 5);
+    box.hi = Eigen::Vector3d(5, 1.99, 5);
     EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
-    box.hi = Eigen::Vector3d(5, 5, 2.99);
+    box.hi = Eigen::Vector3d(5, 5, 1.99);
     EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
     box.hi = Eigen::Vector3d(5, 5, 5);
-    EXPECT_THROW(cells.setup(box, 1.7), std::invalid_argument);  // 5 / 1.7 < 3
-    EXPECT_NO_THROW(cells.setup(box, 1.6));
-    box.hi = Eigen::Vector3d(3, 3, 3);
-    EXPECT_NO_THROW(cells.setup(box, 1.0));  // exactly three cutoffs is allowed
-    // 2-D: y is inactive and may be thin; x and z still need three cutoffs.
+    EXPECT_THROW(cells.setup(box, 2.6), std::invalid_argument);  // 5 / 2.6 < 2
+    EXPECT_NO_THROW(cells.setup(box, 2.5));
+    box.hi = Eigen::Vector3d(2, 2, 2);
+    EXPECT_NO_THROW(cells.setup(box, 1.0));  // exactly two cutoffs is allowed
+    EXPECT_EQ(cells.cellsPerAxis()[1], 2);
+    // 2-D: y is inactive and may be thin; x and z still need two cutoffs.
     box.dimension = 2;
     box.hi = Eigen::Vector3d(5, 0.1, 5);
     EXPECT_NO_THROW(cells.setup(box, 1.0));
     EXPECT_EQ(cells.cellsPerAxis()[1], 1);
-    box.hi = Eigen::Vector3d(5, 1, 2.5);
+    box.hi = Eigen::Vector3d(5, 1, 1.5);
     EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
-    box.hi = Eigen::Vector3d(2.5, 1, 5);
+    box.hi = Eigen::Vector3d(1.5, 1, 5);
     EXPECT_THROW(cells.setup(box, 1.0), std::invalid_argument);
 }
 
