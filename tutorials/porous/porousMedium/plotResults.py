@@ -3,8 +3,9 @@
 
 Reads the DPD 2-D field (postProcessing/profileBins/<time>/flowField.dat, 1 x 1 bins), the solver's
 log (kT series, particles inside the solid, run time), the simpleFoam twin (simpleFoam/<time>/C, U,
-constant/dpdCase for nu) and compareFVM's result (postProcessing/compareFVM/<time>/compare.dat,
-profiles.dat). Writes porousMedium.png (DPD |u|, density, kT series, profiles across the crack),
+constant/dpdCase for nu), compareFVM's result (postProcessing/compareFVM/<time>/compare.dat,
+profiles.dat), the built counts (log.randomEquilWall) and the paper's (published.dat, when there).
+Writes porousMedium.png (DPD |u|, density, kT series, profiles across the crack),
 compareFVM.png (DPD |u|, simpleFoam |u|, their difference, the crack's centre line) and results.dat;
 exits non-zero when a check fails.
 
@@ -42,7 +43,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", "../../.."), "etc"))
-from dpdResults import latest, parse_dict, read_dict, read_table  # noqa: E402
+from dpdResults import latest, parse_dict, read_dict, read_published, read_table  # noqa: E402
 
 test_mode = "-test" in sys.argv[1:]
 
@@ -75,6 +76,16 @@ def solver_log():
     if not kts or not inside or not run:
         sys.exit("plotResults: log.dpdFoamLike has no report or no end")
     return np.array(times[-len(kts):]), np.array(kts), inside[-1], sum(crossed), run
+
+
+def built_counts():
+    """The fluid and frozen particles randomEquilWall built (its log)."""
+    text = open("log.randomEquilWall").read()
+    fluid = re.search(r"^Fluid particles *: *(\d+)", text, re.M)
+    frozen = re.search(r"^Frozen particles *: *(\d+)", text, re.M)
+    if not fluid or not frozen:
+        sys.exit("plotResults: log.randomEquilWall gives no particle counts")
+    return int(fluid.group(1)), int(frozen.group(1))
 
 
 def foam_vector_field(path):
@@ -261,16 +272,27 @@ def main():
     ]
 
     steps, seconds, rate = int(run.group(1)), float(run.group(2)), float(run.group(3))
+    # The system's kT over the whole run (the log's series about the local flow): its largest
+    # deviation from the set kT, a quantity the paper reports.
+    worst_kT = int(np.argmax(np.abs(kts - 1.0)))
+    fluid_built, frozen_built = built_counts()
+    paper = read_published("published.dat")["tables"].get("counts") if os.path.exists("published.dat") else None
     with open("results.dat", "w") as f:
         f.write(f"# Porous medium (docs/scenes.md scene 6){' - TEST MODE' if test_mode else ''}: {table}, {cmp_path}\n")
         f.write(f"mask               {mask_path}  ({shape[1]} x {shape[0]} bins of 1 r_c)\n")
-        f.write(f"porosity           DPD {cmp['porosityDPD']:.4f}  simpleFoam {cmp['porosityFVM']:.4f}\n")
+        f.write(f"porosity           DPD {cmp['porosityDPD']:.4f}  simpleFoam {cmp['porosityFVM']:.4f}"
+                + (f"  published {paper['porosity'][0]:g}" if paper else "") + "\n")
+        f.write(f"particles          fluid {fluid_built}  frozen {frozen_built} (every solid particle within one cutoff"
+                f" of the fluid; {frozen_built / (fluid_built + frozen_built):.1%} of all)"
+                + (f"; published fluid {paper['fluid'][0]:.0f}, frozen {paper['frozen'][0]:.0f}"
+                   f" ({paper['frozen'][0] / (paper['fluid'][0] + paper['frozen'][0]):.1%})" if paper else "") + "\n")
         f.write(f"nu                 {twin['nu']:.5f}  ({twin['nuSource']})\n")
         f.write(f"runTime            {seconds:.0f} s for {steps} steps; {rate:.4g} particle-steps/s\n")
         f.write(f"kTSeries           (" + " ".join(f"{t:g}:{k:.4f}" for t, k in zip(times, kts)) + ")\n")
         f.write(f"kTLog              {kT_log:.5f} +- {kT_log_err:.5f}  (mean of the series from t = {sample_start:g})\n")
         f.write(f"kTFlowPart         {flow_kT:.5f}  (flow's kinetic energy per degree of freedom, from the bins: what a global mean would add)\n")
         f.write(f"kTBins             {kT_bins:.5f}\n")
+        f.write(f"kTMaxDeviation     {kts[worst_kT] - 1:+.5f}  (largest of the log's {len(kts)} reports over the run, at t = {times[worst_kT]:g})\n")
         f.write(f"insideAtEnd        {inside}\ncrossedBounceLayer {crossed}  (whole run)\n")
         f.write(f"uNextToGrains      DPD {u_wall_dpd:.5f}  simpleFoam {u_wall_fvm:.5f}  crack peak {u_peak:.4f}\n")
         f.write(f"L2field            {cmp['L2']:.5f}  (noise {cmp['noiseL2']:.5f}; Linf {cmp['Linf']:.4f})\n")
