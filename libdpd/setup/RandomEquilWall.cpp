@@ -14,6 +14,7 @@
 #include "system/System.hpp"
 #include "core/ThreadBudget.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dpd {
@@ -22,7 +23,7 @@ namespace {
 
 int speciesOf(const Dictionary& parent, const std::string& key, const DpdModel& model, bool frozen) {
     const Dictionary& d = parent.subDict(key);
-    d.checkKeys(frozen ? std::vector<std::string>{"species"}
+    d.checkKeys(frozen ? std::vector<std::string>{"species", "thickness"}
                        : std::vector<std::string>{"species", "density", "initialFlow"});
     const std::string name = d.get<std::string>("species");
     const int s = model.species.indexOf(name);
@@ -94,18 +95,23 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
 // what both the geometry and the run's distance field call fluid: a particle of the geometry's fluid
 // that the field puts inside (a few at the surface, where the interpolated field and the exact shape
 // differ by a fraction of a grid cell) is dropped, so the run starts with no fluid inside its wall
-// and the wall is the geometry's solid, nothing more.
-Particles freezeWall(const Particles& p, const SolidRegion& solid, double cutoff, int fluidSpecies,
+// and the wall is the geometry's solid, nothing more. With a wall thickness (a published wall's depth)
+// the solid particles within it are counted too; those beyond one cutoff are dropped all the same.
+Particles freezeWall(const Particles& p, const SolidRegion& solid, double cutoff, double thickness, int fluidSpecies,
                      int wallSpecies, RandomEquilWallReport& report) {
     const SolidGeometry& geometry = solid.geometry;
+    const double reach = std::max(cutoff, thickness);
     std::vector<std::size_t> fluid, frozen;
+    report.withinThickness = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const Eigen::Vector3d r(p.rx[i], p.ry[i], p.rz[i]);
         if (!geometry.isSolid(r)) {
             if (solid.distance.distance(r) >= 0.0) fluid.push_back(i);
-        } else if (geometry.signedDistance(r, 2.0 * cutoff).distance >= -cutoff) {
-            frozen.push_back(i);
+            continue;
         }
+        const double depth = -geometry.signedDistance(r, 2.0 * reach).distance;
+        if (depth <= cutoff) frozen.push_back(i);
+        if (thickness > 0.0 && depth <= thickness) ++report.withinThickness;
     }
     Eigen::Vector3d mean(0, 0, 0);
     for (const std::size_t i : fluid) mean += Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
@@ -159,7 +165,9 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
     equilibrate(snap, dict, model, report);
 
     // 3. Freeze the wall, drop the rest of the solid.
-    snap.particles = freezeWall(snap.particles, solid, model.cutoff, fluidSpecies, wallSpecies, report);
+    const Dictionary& wallDict = dict.subDict("wall");
+    report.thickness = wallDict.found("thickness") ? wallDict.getPositive<double>("thickness") : 0.0;
+    snap.particles = freezeWall(snap.particles, solid, model.cutoff, report.thickness, fluidSpecies, wallSpecies, report);
     addInitialFlow(snap.particles, 0, report.fluid, flow);  // the fluid comes first
     snap.time = 0.0;
     snap.step = 0;

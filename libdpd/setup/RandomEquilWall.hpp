@@ -6,7 +6,9 @@
 //   box           { min (-8 -1.5 -6); max (8 1.5 6); }   // the whole periodic box
 //   fluid         { species fluid; density 4; }   // optional initialFlow { type poiseuille; axis z;
 //                                                 // wallPositions (-20 20); } (setup/InitialFlow.hpp)
-//   wall          { species wall; }          // a frozen species: the particles kept in the solid
+//   wall          { species wall; }          // a frozen species: the particles kept in the solid;
+//                                            // optional thickness 1.5: a published wall's depth,
+//                                            // whose particles are counted (not kept beyond 1 cutoff)
 //   equilibration { time 5; deltaT 0.02; }   // DPD run of the filled box: one fluid, no walls,
 //                                            // no body force, the integrator of dpdProperties
 //   drivingAxis   x;     // optional: the axis the flow must cross (percolation check); default
@@ -32,6 +34,8 @@ struct DpdModel;
 
 struct RandomEquilWallReport {
     std::size_t filled = 0, fluid = 0, frozen = 0, dropped = 0;
+    double thickness = 0.0;          // the wall entry's thickness (0: none given)
+    std::size_t withinThickness = 0; // solid particles within it of the fluid (the published count)
     double gridPorosity = 0.0;       // fluid fraction of the background grid's cells
     double particlePorosity = 0.0;   // fluid / filled particles
     double equilibratedKT = 0.0;     // kinetic temperature at the end of the equilibration

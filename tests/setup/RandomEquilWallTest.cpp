@@ -97,6 +97,37 @@ TEST_F(RandomEquilWall, ChannelCountsPorosityAndFrozenDensity) {
     EXPECT_LT(momentum.norm(), 1e-9);
 }
 
+// A wall thickness (a published wall's depth) counts the solid particles within it of the fluid and
+// changes nothing else: the same particles are frozen and dropped, to the bit.
+TEST_F(RandomEquilWall, AWallThicknessCountsTheSolidWithinItAndKeepsTheSameParticles) {
+    const auto withThickness = [](const std::string& t) {
+        std::string d = equilDict;
+        const std::string plainWall = "wall { species wall; }";
+        return d.replace(d.find(plainWall), plainWall.size(), "wall { species wall; thickness " + t + "; }");
+    };
+    RandomEquilWallReport plain, thick, whole;
+    const Snapshot a = build(channel(3), equilDict, plain);
+    const Snapshot b = build(channel(3), withThickness("1.2"), thick);
+    EXPECT_EQ(plain.withinThickness, 0u);
+    EXPECT_DOUBLE_EQ(thick.thickness, 1.2);
+    EXPECT_EQ(thick.frozen, plain.frozen);
+    EXPECT_EQ(thick.dropped, plain.dropped);
+    ASSERT_EQ(b.particles.size(), a.particles.size());
+    for (std::size_t i = 0; i < a.particles.size(); ++i) {
+        ASSERT_EQ(b.particles.rz[i], a.particles.rz[i]) << i;
+        ASSERT_EQ(b.particles.species[i], a.particles.species[i]) << i;
+    }
+    // The solid within 1.2 of the fluid: both walls' layers 1.2 deep, a Poisson count about the
+    // density x volume (4 standard deviations), more than the frozen layers 1 deep hold.
+    const double mean = 4.0 * 8.0 * 3.0 * 2.0 * 1.2;
+    EXPECT_NEAR(static_cast<double>(thick.withinThickness), mean, 4.0 * std::sqrt(mean));
+    EXPECT_GT(thick.withinThickness, thick.frozen);
+    // The walls are 1.5 deep: a thickness of 1.5 holds the whole solid.
+    build(channel(3), withThickness("1.5"), whole);
+    EXPECT_EQ(whole.withinThickness, whole.frozen + whole.dropped);
+    EXPECT_NE(error(channel(3), withThickness("-1")).find("keyword 'thickness'"), std::string::npos);
+}
+
 TEST_F(RandomEquilWall, RefusesAllSolidAllFluidAndBlockedGeometries) {
     Picture allSolid(16, std::vector<int>(16, 0)), allFluid(16, std::vector<int>(16, 255));
     std::string e = error(allSolid, equilDict);

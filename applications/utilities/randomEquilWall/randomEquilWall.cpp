@@ -36,7 +36,11 @@ int main(int argc, char** argv) {
                   << "Filled           : " << r.filled << " particles, equilibrated for " << r.equilibrationSteps
                   << " steps (kT " << r.equilibratedKT << ")\n"
                   << "Fluid particles  : " << r.fluid << " (porosity " << r.particlePorosity << ")\n"
-                  << "Frozen particles : " << r.frozen << "\n"
+                  << "Frozen particles : " << r.frozen;
+        if (r.thickness > 0.0)
+            std::cout << " (" << r.withinThickness << " in the wall's thickness " << r.thickness << ": within one cutoff of the "
+                      << "fluid frozen, the rest dropped)";
+        std::cout << "\n"
                   << "Dropped          : " << r.dropped << "\n"
                   << "Written " << (caseDir / "0" / "particles.h5").string() << "\nEnd\n";
     });
