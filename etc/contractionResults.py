@@ -6,23 +6,26 @@ chains/.
 
 Reads the 2-D fields and the sections profileBins wrote (postProcessing/profileBins/<time>/), and
 the solver's log; draws the velocity map and, at each section, velocity, density and temperature
-across the channel; writes results.dat; exits non-zero when a check fails:
+across the channel; writes results.dat (per section the mass flux, the peak and mean ux, the most
+negative ux and the width and flux of reversed flow, density and kT; the difference between the
+profiles at x = -25.5 and -16.5 with its noise); exits non-zero when a check fails:
   - no fluid particle inside the solid at the end (the solver's own count, log.dpdFoamLike);
   - the mean kT of the fluid is the set kT = 1 within 3 % (the Groot-Warren step 0.02 errs by
     well under 1 % (README, integrators), the bounce layer emits at kT, and the viscous heating of
     this slow flow is far below 1 %: 3 % is a margin, not a fit);
   - the mass flux rho ux integrated across the channel is the same at every section (steady,
     incompressible flow: what enters the contraction leaves it): each section's standard error within
-    a budget relative to the mean flux (full 0.5 %, test 5 %: measured 0.24-0.35 % and 2.3-3.9 %,
-    2026-11-24), then every section within 5 budgets of the mean flux, fixed (a run too noisy to
+    a budget relative to the mean flux (full 0.5 %, test 5 %: measured 0.25-0.29 % and 2.0-3.0 %,
+    2026-11-28), then every section within 5 budgets of the mean flux, fixed (a run too noisy to
     decide fails instead of passing more easily).
 The -chains variant (fluid and beads together in flowField) has the same checks, the solver's count
 of particles inside the solid covering the beads too (it counts every mobile particle), and also
-draws the beads' density (beadField) at the sections and on the grid, the chains' R_g, span and
-end-to-end extension along x by where their centres lie (chainStatistics binned along x), and the
-chains of the latest snapshot; it writes resultsChains.dat and contractionChains.png, and checks
-that the latest snapshot still holds every bead and bond insertChains made (chains x length beads,
-chains x (length - 1) bonds) and that the longest bond the log reports stays below r_max.
+draws the beads' density (beadField) at the sections and on the grid, the chains' R_g, span and end-
+to-end extension along x by where their centres lie (chainStatistics binned along x), and the chains
+at the start (0/) and in the latest snapshot; it writes resultsChains.dat and contractionChains.png,
+and checks that the latest snapshot still holds every bead and bond insertChains made (chains x
+length beads, chains x (length - 1) bonds) and that the longest bond the log reports stays below
+r_max.
 Every check is written so that a NaN fails it.
 """
 import glob
@@ -68,15 +71,35 @@ def read_sections(d, name):
     return sorted(((x, read_table(p)) for x, p in zip(positions, paths)), key=lambda item: item[0])
 
 
+SECTION_COLUMNS = "x flux fluxErr uxMax density kT uxMean uxMin reversedWidth reversedFlux"
+
+
 def section_row(x, s):
-    """x, the mass flux rho ux dz across the section with its error, the peak ux, and the mean
-    density and kT over the bins the fluid fills."""
+    """SECTION_COLUMNS at a section: x, the mass flux rho ux dz across it with its error, the peak ux,
+    the mean density and kT over the bins the fluid fills, the mean ux over them (particle-weighted),
+    the most negative ux, and the width and mass flux of the reversed flow (the fluid bins whose ux lies
+    below zero by more than two standard errors: a bin at the noise is not reversed flow)."""
     dz = s["z"][1] - s["z"][0]
     flux = np.sum(s["density"] * s["ux"]) * dz
     flux_err = math.sqrt(np.sum((s["density"] * s["uxErr"]) ** 2 + (s["ux"] * s["densityErr"]) ** 2)) * dz
     fluid = s["count"] >= 10
+    ux, weight = s["ux"][fluid], s["count"][fluid]
+    reversed_bins = ux < -2.0 * s["uxErr"][fluid]
     return (x, flux, flux_err, np.max(s["ux"]), np.mean(s["density"][fluid]),
-            np.sum(s["kT"][fluid] * s["count"][fluid]) / np.sum(s["count"][fluid]))
+            np.sum(s["kT"][fluid] * weight) / np.sum(weight), np.sum(ux * weight) / np.sum(weight), np.min(ux),
+            np.sum(reversed_bins) * dz, np.sum(s["density"][fluid][reversed_bins] * ux[reversed_bins]) * dz)
+
+
+def upstream_difference(sections):
+    """How far the profile at the second section differs from the one at the first (both upstream of
+    the contraction: x = -16.5 and -25.5 at full size): the two x, the RMS of ux(second) - ux(first)
+    over the bins both sections fill, and its noise, the RMS of their combined standard errors (a
+    difference at the noise is no difference)."""
+    (x1, a), (x2, b) = sections[0], sections[1]
+    both = (a["count"] >= 10) & (b["count"] >= 10)
+    diff = b["ux"][both] - a["ux"][both]
+    noise = np.hypot(a["uxErr"][both], b["uxErr"][both])
+    return x1, x2, float(np.sqrt(np.mean(diff ** 2))), float(np.sqrt(np.mean(noise ** 2)))
 
 
 def draw_map(fig, ax, grid, column, title, cmap="viridis"):
@@ -122,12 +145,17 @@ def flow_failures(rows, mean_kT, inside, test_mode, inside_what):
     return failures
 
 
-def write_flow_table(f, rows, mean_kT, inside, layer, extra_columns="", extra=None, inside_what="fluid particles"):
-    f.write(f"# x flux fluxErr uxMax density kT{extra_columns}   (flux = integral of rho ux dz at the section)\n")
+def write_flow_table(f, rows, mean_kT, inside, layer, extra_columns="", extra=None, inside_what="fluid particles",
+                     upstream=None):
+    f.write(f"# {SECTION_COLUMNS}{extra_columns}   (flux = integral of rho ux dz at the section; reversed: the "
+            "fluid bins with ux below 0 by more than 2 standard errors, their width and flux)\n")
     for k, r in enumerate(rows):
         values = list(r) + (list(extra[k]) if extra else [])
         f.write(" ".join(f"{v:.6g}" for v in values) + "\n")
     f.write(f"# mean kT {mean_kT:.5f}; {inside_what} inside the solid at the end {inside}\n")
+    if upstream is not None:
+        f.write(f"# ux at x = {upstream[1]:g} against x = {upstream[0]:g}: RMS difference {upstream[2]:.5f}, "
+                f"its noise {upstream[3]:.5f}\n")
     if layer:
         returned = sum(a for a, _ in layer)
         crossed = sum(b for _, b in layer)
@@ -173,7 +201,7 @@ def main(title, test_mode, chains=False, low_g=False):
     fig.savefig("contraction.png", dpi=110)
 
     with open("results.dat", "w") as f:
-        write_flow_table(f, rows, mean_kT, inside, layer)
+        write_flow_table(f, rows, mean_kT, inside, layer, upstream=upstream_difference(sections))
     report("results.dat", flow_failures(rows, mean_kT, inside, test_mode, "fluid particles"))
 
 
@@ -212,10 +240,12 @@ def chain_bin_row(bins, x):
     return bins["samples"][k], bins["Rg2"][k], bins["span"][k], math.sqrt(bins["Rx2"][k])
 
 
-def snapshot_chains(case):
-    """The latest snapshot's beads and bonds: bead positions, and each bond as the segment from its
-    first bead along its followed vector (drawn without jumps across the periodic box)."""
-    path = latest(os.path.join(case, "[0-9]*/particles.h5"))
+def snapshot_chains(case, time_dir=None):
+    """A snapshot's beads and bonds (the latest, or that of time_dir, e.g. "0"): bead positions, and
+    each bond as the segment from its first bead along its followed vector (drawn without jumps across
+    the periodic box)."""
+    path = (os.path.join(case, time_dir, "particles.h5") if time_dir is not None
+            else latest(os.path.join(case, "[0-9]*/particles.h5")))
     with h5py.File(path, "r") as f:
         names = [n.decode() if isinstance(n, bytes) else str(n) for n in f.attrs["speciesNames"]]
         species = np.array(f["particles/species"])
@@ -292,10 +322,10 @@ def chain_failures(inserted, snap, bond):
 
 def write_chain_table(path, flow, extra, inserted, snap, bond, means):
     """resultsChains.dat: the scene's table with the beads' and chains' columns, and the chains' summary."""
-    rows, mean_kT, inside, layer = flow
+    rows, mean_kT, inside, layer, upstream = flow
     with open(path, "w") as f:
         write_flow_table(f, rows, mean_kT, inside, layer, " beadDensity beadFlux chainSamples Rg2 spanX RxRms", extra,
-                         "mobile particles (fluid and beads)")
+                         "mobile particles (fluid and beads)", upstream)
         f.write("# bead columns: the beads alone at the section; chain columns: the chains whose centres lie in\n"
                 "# the x bin of chainStatistics holding the section (R_g^2, span along x, rms end-to-end along x)\n")
         f.write(f"# chains {inserted[0]} of {inserted[1]} beads; latest snapshot {len(snap['beads'])} beads, "
@@ -316,13 +346,16 @@ def main_chains(title, test_mode, case="chains"):
     inserted = (int(inserted["chains"]), int(inserted["length"]))
     extra = [bead_row(x, b, s) + chain_bin_row(bins, x) for (x, b), (_, s) in zip(bead_sections, sections)]
 
-    fig, axes = plt.subplots(4, 2, figsize=(13, 15))
+    start = snapshot_chains(case, "0")
+    fig, axes = plt.subplots(5, 2, figsize=(13, 18.5))
     draw_map(fig, axes[0, 0], grid, "ux", "ux of fluid and beads on the x-z grid (flowField.vti)")
     draw_map(fig, axes[0, 1], bead_grid, "density", "bead density on the x-z grid (beadField.vti)", cmap="magma")
     draw_sections(axes[1, 0], axes[1, 1], axes[2, 0], sections)
     draw_bead_sections(axes[2, 1], bead_sections)
     draw_chain_bins(axes[3, 0], bins, sections)
     draw_snapshot(axes[3, 1], grid, snap)
+    draw_snapshot(axes[4, 0], grid, start)
+    axes[4, 1].axis("off")
     # chains/ gives resultsChains.dat and contractionChains.png, chainsLowG/ the same names with LowG.
     suffix = case[0].upper() + case[1:]
     with open(os.path.join(case, "constant/dpdProperties")) as f:
@@ -331,7 +364,7 @@ def main_chains(title, test_mode, case="chains"):
     fig.tight_layout()
     fig.savefig(f"contraction{suffix}.png", dpi=100)
 
-    flow = (rows, mean_kT, inside, layer)
+    flow = (rows, mean_kT, inside, layer, upstream_difference(sections))
     write_chain_table(f"results{suffix}.dat", flow, extra, inserted, snap, bond, chain_means(case))
     failures = flow_failures(rows, mean_kT, inside, test_mode, "mobile particles (fluid or beads)")
     report(f"results{suffix}.dat", failures + chain_failures(inserted, snap, bond))

@@ -1,9 +1,10 @@
-// Ramp contraction (docs/scenes.md scene 7), small (the -test version of ramp.geo): a channel 24 long and 12 wide, narrowed
-// in the middle to half its width by a symmetric trapezoid on each wall: 45-degree ramps from the
-// wall at |x| = b up to the throat, |z| = h over |x| < c. The throat is the square contraction's
-// (half width, length 2c = H); the ramps replace its vertical steps. gmsh's x-y plane is the box's x-z
+// Ramp contraction (docs/scenes.md scene 7), small (the -test version of ramp.geo, scaled by 0.4): a
+// channel 24 long and 12 wide, narrowed in the middle to a third of its width by a symmetric trapezoid
+// on each wall: 45-degree ramps from the wall at |x| = b up to the throat, |z| = h over |x| < c. The
+// throat is as wide as the square contraction's and the trapezoids hold as much solid as its blocks (2
+// x 32), so that both shapes have the published flow areas scaled. gmsh's x-y plane is the box's x-z
 // plane (extrudeAxis y in constant/dpdProperties); the fluid is the surface of the group "fluid".
-L = 12;  H = 6;  c = 3;  h = 3;  b = 6;
+L = 12;  H = 6;  c = 2;  h = 2;  b = 6;
 Point(1) = {-L, -H, 0};  Point(2) = {-b, -H, 0};  Point(3) = {-c, -h, 0};  Point(4) = {c, -h, 0};
 Point(5) = {b, -H, 0};   Point(6) = {L, -H, 0};   Point(7) = {L, H, 0};    Point(8) = {b, H, 0};
 Point(9) = {c, h, 0};    Point(10) = {-c, h, 0};  Point(11) = {-b, H, 0};  Point(12) = {-L, H, 0};

@@ -1,7 +1,8 @@
-// Square contraction, small (the -test version of contraction.geo): a channel 24 long and 12 wide, narrowed in the middle
-// by a square step to 6 over a length of 6. gmsh's x-y plane is the box's x-z plane
-// (extrudeAxis y in constant/dpdProperties); the fluid is the surface of the group "fluid".
-L = 12;  H = 6;  c = 3;  h = 3;
+// Square contraction, small (the -test version of contraction.geo, scaled by 0.4): a channel 24 long
+// and 12 wide, narrowed in the middle by a square step to 4 over a length of 8. gmsh's x-y plane is
+// the box's x-z plane (extrudeAxis y in constant/dpdProperties); the fluid is the surface of the group
+// "fluid".
+L = 12;  H = 6;  c = 4;  h = 2;
 Point(1) = {-L, -H, 0};  Point(2) = {-c, -H, 0};  Point(3) = {-c, -h, 0};  Point(4) = {c, -h, 0};
 Point(5) = {c, -H, 0};   Point(6) = {L, -H, 0};   Point(7) = {L, H, 0};    Point(8) = {c, H, 0};
 Point(9) = {c, h, 0};    Point(10) = {-c, h, 0};  Point(11) = {-c, H, 0};  Point(12) = {-L, H, 0};
