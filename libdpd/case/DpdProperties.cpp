@@ -6,7 +6,7 @@
 #include "io/Dictionary.hpp"
 #include "io/Snapshot.hpp"
 #include "system/System.hpp"
-#include "walls/GeometryWall.hpp"
+#include "walls/GeometryWallDictionary.hpp"
 #include "walls/WallTypes.hpp"
 
 #include <algorithm>
@@ -105,8 +105,13 @@ IntegratorSettings readIntegrator(const Dictionary& d) {
     return d.found("integrator") ? IntegratorSettings::read(d.subDict("integrator")) : IntegratorSettings{};
 }
 
+// The case's geometry block, kept for a geometry wall to be built on the snapshot's box (null: none).
+std::shared_ptr<const Dictionary> geometryBlock(const Dictionary& d) {
+    return d.found("geometry") ? std::make_shared<const Dictionary>(d.subDict("geometry")) : nullptr;
+}
+
 // Each wall names its type (walls/WallTypes.hpp), which reads the rest of its sub-dictionary.
-WallList readWalls(const Dictionary& d, int dimension, double cutoff) {
+WallList readWalls(const Dictionary& d, int dimension, double cutoff, std::vector<PlanarWallSettings>& planes) {
     WallList walls;
     if (!d.found("walls")) return walls;
     const Dictionary& wd = d.subDict("walls");
@@ -116,31 +121,37 @@ WallList readWalls(const Dictionary& d, int dimension, double cutoff) {
         const std::string type = w.get<std::string>("type");
         if (!wallRegistry().has(type))
             w.fail("type", "unknown wall type '" + type + "' (expected " + wallRegistry().nameList() + ")");
-        walls.add(wallRegistry().make(type, w, WallReadContext{name, walls.size(), dimension, cutoff}));
+        walls.add(wallRegistry().make(type, w, WallReadContext{name, walls.size(), dimension, cutoff, geometryBlock(d), &planes}));
     }
     return walls;
 }
 
-// The geometry block (if any) and the rule of the wall it makes (geometryWall; walls/GeometryWall.hpp).
-GeometryWallSettings readGeometryWall(const Dictionary& d, double cutoff) {
-    GeometryWallSettings g;
+bool hasGeometryWall(const Dictionary& d) {
+    if (!d.found("walls")) return false;
+    const Dictionary& wd = d.subDict("walls");
+    for (const std::string& name : wd.keys())
+        if (wd.subDict(name).getOrDefault<std::string>("type", "") == "geometry") return true;
+    return false;
+}
+
+// A geometry block without a geometry wall in the walls block gets one, named geometry: its rule from
+// the older geometryWall block (read with a note), else bounceBack.
+void addGeometryWall(const Dictionary& d, int dimension, double cutoff, DpdModel& m) {
     if (!d.found("geometry")) {
         if (d.found("geometryWall")) d.fail("geometryWall", "a geometryWall needs the geometry block it acts on");
-        return g;
+        return;
     }
-    g.geometry = std::make_shared<const Dictionary>(d.subDict("geometry"));
-    if (!d.found("geometryWall")) return g;
-    const Dictionary& wd = d.subDict("geometryWall");
-    wd.checkKeys({"reflection", "alpha"});
-    try {
-        g.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", "bounceBack"));
-    } catch (const std::invalid_argument& e) {
-        wd.fail("reflection", e.what());
+    const bool declared = hasGeometryWall(d);
+    if (declared && d.found("geometryWall"))
+        d.fail("geometryWall", "the walls block has a geometry wall already: give its rule there");
+    if (declared) return;
+    const WallReadContext context{"geometry", m.walls.size(), dimension, cutoff, geometryBlock(d)};
+    if (d.found("geometryWall")) {
+        m.walls.add(readGeometryWall(d.subDict("geometryWall"), context));
+        m.inputNotes.push_back("geometryWall { ... } is read as walls { geometry { type geometry; ... } }, its newer form");
+        return;
     }
-    if (g.rule == ReflectionRule::bounceForward) wd.fail("reflection", "bounceForward is for planar walls only");
-    if (g.rule == ReflectionRule::bounceLayer) g.layer = wd.getPositive<double>("alpha") * cutoff;
-    else if (wd.found("alpha")) wd.fail("alpha", "only reflection bounceLayer has a layer thickness alpha");
-    return g;
+    m.walls.add(readGeometryWall(Dictionary::parse("type geometry;", "constant/dpdProperties geometry wall"), context));
 }
 
 // Taking back part of a bonded pair's force is done after the whole pair force, which the schemes
@@ -211,6 +222,12 @@ void addBonds(System& sys, const DpdModel& model, Bonds bonds, const std::string
 
 }  // namespace
 
+std::vector<const PlanarWallSettings*> DpdModel::planes() const {
+    std::vector<const PlanarWallSettings*> p;
+    for (const PlanarWallSettings& w : planarWalls) p.push_back(&w);
+    return p;
+}
+
 DpdModel readDpdModel(const Dictionary& d) {
     // geometry: the solid of any shape, read where it is used (geometry/GeometryDictionary).
     d.checkKeys({"dimension", "kT", "cutoff", "seed", "weightExponent", "species", "pairCoeffs", "integrator",
@@ -230,16 +247,16 @@ DpdModel readDpdModel(const Dictionary& d) {
     m.bodyForce = readBodyForce(d, m.dimension);  // forces/BodyForceTypes.cpp
     m.bondPotential = readBondPotential(d);         // forces/BondPotentialTypes.cpp
     if (m.bondPotential) m.bondedPairs = readBondedPairs(d.subDict("bonds"), m.integrator);
-    m.walls = readWalls(d, m.dimension, m.cutoff);
+    m.walls = readWalls(d, m.dimension, m.cutoff, m.planarWalls);
     makeIntegrator(m.integrator, m.walls);  // the type refuses walls it cannot run
-    m.geometryWall = readGeometryWall(d, m.cutoff);
+    addGeometryWall(d, m.dimension, m.cutoff, m);
     m.stability = readStability(d);
     return m;
 }
 
 DpdModel readDpdProperties(const std::string& caseDir) {
     DpdModel m = readDpdModel(Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string()));
-    m.geometryWall.caseDir = caseDir;
+    m.caseDir = caseDir;
     return m;
 }
 
@@ -266,10 +283,9 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
     sys.forceParameters = {model.cutoff, model.weightExponent, model.kT, dt};
     sys.seed = model.seed;
     sys.bodyForce = model.bodyForce;
-    sys.walls = model.walls;  // planar walls hold no state of their own: the list is shared
     sys.step = snapshot.step;
     sys.time = snapshot.time;
-    for (const PlanarWallSettings* w : model.walls.planes())
+    for (const PlanarWallSettings* w : model.planes())
         for (int a = 0; a < 3; ++a)
             if (sys.box.isActiveAxis(a) && (w->point[a] < sys.box.lo[a] || w->point[a] > sys.box.hi[a]))
                 throw IoError("constant/dpdProperties: wall '" + w->name + "' has its point outside the box of " + snapshotFile);
@@ -277,15 +293,11 @@ System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const st
         const std::string why = model.walls[w].unfitFor(sys.box);
         if (!why.empty()) throw IoError("constant/dpdProperties: wall '" + model.walls[w].name() + "' does not fit the box of " + snapshotFile + ": " + why);
     }
-    const std::string thin = model.walls.thinWall(sys.box, model.cutoff);
+    sys.walls = model.walls.builtOn({sys.box, model.caseDir, model.cutoff});  // a geometry's field on this box
+    const std::string thin = sys.walls.thinWall(model.planes(), sys.box, model.cutoff);
     if (!thin.empty())
         throw IoError("constant/dpdProperties: the solid behind wall '" + thin + "' is thinner than one cutoff inside the box of " +
                       snapshotFile + " (fluid would interact through the wall across the periodic boundary)");
-    if (model.geometryWall.geometry) {
-        SolidRegion solid = readSolidRegion(*model.geometryWall.geometry, model.geometryWall.caseDir, sys.box, model.cutoff);
-        sys.walls.add(std::make_shared<GeometryWall>(std::move(solid.distance), model.geometryWall.rule,
-                                                     model.geometryWall.layer));
-    }
     requireFewInsideWalls(sys, model, snapshotFile);
     addBonds(sys, model, std::move(snapshot.bonds), snapshotFile);
     sys.ranks = ranks;

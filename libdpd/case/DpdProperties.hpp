@@ -12,12 +12,15 @@
 //              // (and, if left out, gamma_ij = sqrt(gamma_ii gamma_jj)); e.g. wall-wall { a 5; gamma 4.5; }
 //   integrator { type GrootWarren; lambda 0.65; }   // Euler | GrootWarren (lambda) | DPDVV | Shardlow
 //   bodyForce  { type uniform; value (0.02 0 0); }     // none | uniform | reversePoiseuille (+ gradientAxis z)
-//   walls      { lower { type plane; point (0 0 -20); normal (0 0 1); velocity (0 0 0); reflection bounceBack; } }
-//              // reflection: none | specular | bounceBack | maxwellian | bounceForward
-//              //             | bounceLayer (with alpha 0.1: the layer is alpha x cutoff thick)
-//              // frozen particles behind a wall move with its velocity
-//              // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; }: a smooth wall acting on the
-//              // fluid within zc (friction gammaL) with a WCA repulsion (walls/TunableSlipWall.hpp);
+//   walls      { lower { type plane; point (0 0 -20); normal (0 0 1); velocity (0 0 0); reflection bounceBack; }
+//                grains { type geometry; reflection bounceLayer; alpha 0.1; } }
+//              // type: plane | geometry (the solid of the geometry block); walls/WallTypes.cpp
+//              // reflection: none | specular | bounceBack | maxwellian | bounceForward (reverseFrame
+//              //             wall | lab) | bounceLayer (with alpha 0.1: the layer is alpha x cutoff
+//              //             thick); walls/WallRuleTypes.cpp. Any rule on any shape.
+//              // frozen particles behind a planar wall move with its velocity
+//              // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; }: a plane's friction layer acting
+//              // on the fluid within zc (friction gammaL) with a WCA repulsion (walls/TunableSlipLayer.hpp);
 //              // its reflection defaults to specular, a safety net behind the WCA wall
 //   stability  { maxKTRatio 2; maxInsideWalls 0; checkInterval 100; }   // optional; checkInterval in
 //                                                 // steps, besides every report and every write
@@ -26,9 +29,10 @@
 //                                                 // | weighted (with weight w), forces/BondedPairs.hpp
 //   geometry   { type imageMask; file "constant/geometry/mask.png"; ... }   // optional: a solid of any
 //                                                 // shape (geometry/GeometryDictionary.hpp)
-//   geometryWall { reflection bounceLayer; alpha 0.1; }  // optional, with geometry: how the solver
-//                                                 // keeps fluid out of that solid (walls/GeometryWall.hpp);
-//                                                 // any reflection but bounceForward, default bounceBack
+//                                                 // A geometry block without a geometry wall gets one,
+//                                                 // named geometry, reflection bounceBack. The older
+//                                                 // geometryWall { reflection ...; alpha ...; } still
+//                                                 // reads as that wall, with a note in the log.
 //
 // Every pair of species that can interact (at least one not frozen) needs its coefficients; pairs
 // of frozen species never interact and need none.
@@ -37,7 +41,6 @@
 #include "forces/BondPotential.hpp"
 #include "forces/BondedPairs.hpp"
 #include "integrators/Integrator.hpp"
-#include "walls/ReflectionRule.hpp"
 #include "walls/WallList.hpp"
 
 #include <cstdint>
@@ -58,16 +61,10 @@ struct StabilitySettings {
     long checkIntervalSteps = 100;  // the run's health is checked this often, and before every write
 };
 
-// The wall of any shape: the geometry block, kept to be built on the snapshot's box, and the rule of
-// the geometryWall block.
-struct GeometryWallSettings {
-    std::shared_ptr<const Dictionary> geometry;  // null: the case has no geometry block
-    std::string caseDir = ".";                   // the geometry's files are relative to it
-    ReflectionRule rule = ReflectionRule::bounceBack;
-    double layer = 0.0;  // bounceLayer: alpha x cutoff
-};
-
 struct DpdModel {
+    // The planar walls' settings, in the walls block's order.
+    std::vector<const PlanarWallSettings*> planes() const;
+
     int dimension = 3;
     double kT = 1.0;
     double cutoff = 1.0;
@@ -79,10 +76,13 @@ struct DpdModel {
     std::shared_ptr<const BodyForce> bodyForce = noBodyForce();
     std::shared_ptr<const BondPotential> bondPotential;  // null: the case has no bonds block
     BondedPairs bondedPairs;
-    WallList walls;  // the walls block's walls (planar)
-    GeometryWallSettings geometryWall;
+    WallList walls;  // the walls block's walls; a geometry wall's shape is built on the snapshot's box
+    // The planar walls' settings as read: the builders and post-processing fit channels between them.
+    std::vector<PlanarWallSettings> planarWalls;
+    std::string caseDir = ".";  // a geometry's files are relative to it
     StabilitySettings stability;
     std::vector<std::string> pairNotes;  // pairs whose coefficients were mixed, for the log
+    std::vector<std::string> inputNotes;  // older keywords read as their newer form, for the log
 };
 
 // Reads and checks the dictionary; every error is an InputError naming file, line and keyword.

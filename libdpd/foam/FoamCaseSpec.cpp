@@ -36,9 +36,9 @@ Box readMeshBox(const Dictionary& dict, const MakeFoamCaseInput& in, int dpdDime
 
 // The two planar walls facing each other along one axis (none is fine: a periodic box).
 void readWalls(const Dictionary& dpdProperties, const DpdModel& model, FoamCaseSpec& s) {
-    const std::vector<const PlanarWallSettings*> walls = model.walls.planes();
-    if (model.walls.empty()) return;
-    if (walls.size() != 2 || model.walls.size() != 2)
+    const std::vector<const PlanarWallSettings*> walls = model.planes();
+    if (walls.empty()) return;  // a geometry's walls are the geometry block's (readGeometry)
+    if (walls.size() != 2)
         dpdProperties.fail("walls", "the continuum case takes no walls or two planar walls facing each other, found " +
                                         std::to_string(walls.size()));
     const int axis = walls[0]->normalAxis();

@@ -104,7 +104,7 @@ enum RandomStream : std::uint32_t {
     kStreamWallThermostat = 4,
     kStreamShardlowSweep = 5,  // pair Gaussians of Shardlow's dissipative-random sweep (pairGaussian)
     kStreamTunableSlip = 6,    // random force of a tunable-slip wall (the wall's index in bits 8-14:
-                               // walls/TunableSlipWall.cpp tunableSlipStream)
+                               // walls/TunableSlipParameters.cpp tunableSlipStream)
     kStreamChainBuilder = 7,   // the random walks of setup/ChainBuilder (id = chain, step = draw)
     kStreamGeometryWall = 0x40,  // the geometry wall's reflections: apart from the others, from
                                  // Shardlow's 5 + 16 k and from the +16 of an emitted speed

@@ -6,7 +6,6 @@
 #include "sampling/BinAccumulatorFile.hpp"
 #include "sampling/BinLayoutDictionary.hpp"
 #include "sampling/PairVirial.hpp"
-#include "walls/PlanarWallSettings.hpp"
 #include "system/System.hpp"
 
 #include <filesystem>
@@ -36,11 +35,10 @@ std::vector<std::uint8_t> readSpeciesMask(const Dictionary& d, const System& sys
 }
 
 // Whether a wall completes crossings at the end of the step (bounce-forward: to the position mirrored
-// across its plane) that move particles along x, the axis of a decomposed run's slabs.
+// across its surface) that move particles along x, the axis of a decomposed run's slabs.
 bool movesAcrossSlabsAfterSort(const WallList& walls) {
     for (std::size_t w = 0; w < walls.size(); ++w) {
-        const PlanarWallSettings* plane = walls[w].plane();
-        if (plane && plane->rule == ReflectionRule::bounceForward && plane->normal.x() != 0.0) return true;
+        if (walls[w].rule().defersCrossing() && walls[w].shape().returnsAlong(0)) return true;
     }
     return false;
 }

@@ -46,7 +46,7 @@ FrozenLatticeSettings readLattice(const Dictionary& wd, const DpdModel& model) {
 // With rule none the fluid may enter the solid, and every point is kept.
 std::vector<Eigen::Vector3d> withinReachOfFluid(std::vector<Eigen::Vector3d> points, const PlanarWallSettings& w,
                                                 double cutoff) {
-    if (w.rule == ReflectionRule::none) return points;
+    if (!w.rule->returnsFluid()) return points;
     points.erase(std::remove_if(points.begin(), points.end(),
                                 [&](const Eigen::Vector3d& r) { return -w.signedDistance(r.x(), r.y(), r.z()) >= cutoff; }),
                  points.end());
@@ -63,12 +63,12 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
         snap.speciesNames.push_back(model.species[s].name);
         snap.speciesFrozen.push_back(model.species[s].frozen);
     }
-    const std::vector<const PlanarWallSettings*> walls = model.walls.planes();
+    const std::vector<const PlanarWallSettings*> walls = model.planes();
     for (const PlanarWallSettings* w : walls)
         for (int a = 0; a < 3; ++a)
             if (snap.box.isActiveAxis(a) && (w->point[a] < snap.box.lo[a] || w->point[a] > snap.box.hi[a]))
                 d.fail("box", "wall '" + w->name + "' of constant/dpdProperties lies outside the box");
-    const std::string thin = model.walls.thinWall(snap.box, model.cutoff);
+    const std::string thin = model.walls.builtOn({snap.box, model.caseDir, model.cutoff}).thinWall(walls, snap.box, model.cutoff);
     if (!thin.empty())
         d.fail("box", "the solid behind wall '" + thin +
                           "' is thinner than one cutoff inside the box: enlarge the box along the wall normal");

@@ -35,7 +35,7 @@ void channelBodyForce(const Dictionary& d, const DpdModel& model, int axis, Init
 void channelFromPositions(const Dictionary& d, const DpdModel& model, InitialFlow& flow) {
     if (!d.found("axis") || !d.found("wallPositions"))
         d.fail(d.found("axis") ? "axis" : "wallPositions", "give both axis and wallPositions (the walls of a geometry)");
-    if (!model.walls.empty())
+    if (!model.planes().empty())
         d.fail("wallPositions", "constant/dpdProperties has planar walls: the start uses theirs; wallPositions is for "
                                 "the walls of a geometry block");
     flow.axis = d.getAxis("axis");
@@ -49,8 +49,8 @@ void channelFromModel(const Dictionary& d, const DpdModel& model, InitialFlow& f
         channelFromPositions(d, model, flow);
         return;
     }
-    const std::vector<const PlanarWallSettings*> walls = model.walls.planes();
-    if (walls.size() != 2 || model.walls.size() != 2)
+    const std::vector<const PlanarWallSettings*> walls = model.planes();
+    if (walls.size() != 2)
         d.fail("type", "a poiseuille start needs exactly two planar walls in constant/dpdProperties (or, for the "
                        "walls of a geometry, axis and wallPositions)");
     const int axis = walls[0]->normalAxis();
@@ -69,7 +69,7 @@ void channelFromModel(const Dictionary& d, const DpdModel& model, InitialFlow& f
 
 // The periodic box of a reverse-Poiseuille start.
 void periodicBoxFromModel(const Dictionary& d, const DpdModel& model, const Box& box, InitialFlow& flow) {
-    if (!model.walls.empty()) d.fail("type", "a reversePoiseuille start needs a box without walls");
+    if (!model.planes().empty()) d.fail("type", "a reversePoiseuille start needs a box without walls");
     const BodyForce& f = *model.bodyForce;
     if (!dynamic_cast<const ReversePoiseuilleBodyForce*>(&f) || !f.active())
         d.fail("type", "a reversePoiseuille start needs a reversePoiseuille body force in constant/dpdProperties");

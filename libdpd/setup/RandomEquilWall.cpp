@@ -73,8 +73,7 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     const double dt = ed.getPositive<double>("deltaT");
     DpdModel fluidOnly = model;
     fluidOnly.bodyForce = noBodyForce();
-    fluidOnly.walls = WallList{};
-    fluidOnly.geometryWall = GeometryWallSettings{};  // the box is filled through the solid too
+    fluidOnly.walls = WallList{};  // the box is filled through the solids too
     // Under mpirun the ranks share the box (docs/parallel.md); every rank then goes on with all of it.
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict", &Communicator::world());
     const auto integrator = makeIntegrator(model.integrator);
@@ -133,7 +132,7 @@ Particles freezeWall(const Particles& p, const SolidRegion& solid, double cutoff
 Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdProperties, const DpdModel& model,
                               const std::string& caseDir, RandomEquilWallReport& report) {
     dict.checkKeys({"box", "fluid", "wall", "equilibration", "drivingAxis"});
-    if (!model.walls.empty())
+    if (!model.planes().empty())
         dpdProperties.fail("walls", "randomEquilWall builds the walls from the geometry block: remove the planar walls");
     if (!dpdProperties.found("geometry"))
         dpdProperties.fail("geometry", "randomEquilWall needs the shape of the solid: add a geometry { type imageMask; ... } "

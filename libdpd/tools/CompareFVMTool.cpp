@@ -55,7 +55,7 @@ void checkRecord(const Setup& s, const std::string& caseDir) {
     if (!sameVector(r.get<Eigen::Vector3d>("g"), g, g.norm()))
         r.fail("g", "differs from the body force of " + props.fileName() + ": rerun makeFoamCase");
     const std::string wallAxis = r.get<std::string>("wallAxis");
-    for (const PlanarWallSettings* w : model.walls.planes()) {
+    for (const PlanarWallSettings* w : model.planes()) {
         const int a = axisFromLetter(wallAxis);
         const bool found = a >= 0 && (std::abs(r.subDict("lowerWall").get<double>("position") - w->point[a]) < 1e-9 ||
                                       std::abs(r.subDict("upperWall").get<double>("position") - w->point[a]) < 1e-9);

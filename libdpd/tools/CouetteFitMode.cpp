@@ -17,7 +17,7 @@ int wallSlidingAxis(const DpdModel& m) {
     int axis = -1, count = 0;
     for (int a = 0; a < 3; ++a) {
         bool moving = false;
-        for (const PlanarWallSettings* w : m.walls.planes()) moving = moving || w->velocity[a] != 0.0;
+        for (const PlanarWallSettings* w : m.planes()) moving = moving || w->velocity[a] != 0.0;
         if (moving) { axis = a; ++count; }
     }
     return count == 1 ? axis : -1;

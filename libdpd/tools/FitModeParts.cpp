@@ -24,7 +24,7 @@ std::string vectorText(const Eigen::Vector3d& v) {
 std::pair<const PlanarWallSettings*, const PlanarWallSettings*> channelWalls(const FitSlipLengthSetup& s, const ProfileTableData& t,
                                                               int axis) {
     std::vector<const PlanarWallSettings*> walls;
-    for (const PlanarWallSettings* w : s.model.walls.planes())
+    for (const PlanarWallSettings* w : s.model.planes())
         if (w->normalAxis() == axis) walls.push_back(w);
     if (walls.size() != 2)
         s.dpdProperties.fail("walls", "mode " + s.mode->name() + " needs exactly two planar walls with normals along " +
@@ -44,7 +44,7 @@ ChannelBounds channelBounds(const FitSlipLengthSetup& s, const ProfileTableData&
         const auto [lower, upper] = channelWalls(s, t, axis);
         return {lower->point[axis], upper->point[axis], lower->velocity[s.component], upper->velocity[s.component]};
     }
-    for (const PlanarWallSettings* w : s.model.walls.planes())
+    for (const PlanarWallSettings* w : s.model.planes())
         if (w->normalAxis() == axis)
             s.dict.fail("wallPositions", "the case has planar walls with normals along " + t.axisName() + " ('" +
                                              w->name + "' in " + s.dpdProperties.fileName() +

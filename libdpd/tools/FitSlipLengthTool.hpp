@@ -19,7 +19,7 @@
 //                               // geometry block (randomEquilWall); such walls are at rest. An error
 //                               // when the case has planar walls along that axis (theirs are used)
 //
-// When a channel wall has tunable slip (walls/TunableSlipWall.hpp) the predicted slip length is written
+// When a channel wall has tunable slip (walls/TunableSlipLayer.hpp) the predicted slip length is written
 // beside the measured one (analysis/TunableSlipPrediction.hpp): slipLengthPredicted (lower upper).
 //
 // poiseuille: the walls are the two planar walls of constant/dpdProperties whose normals lie along

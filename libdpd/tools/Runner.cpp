@@ -119,7 +119,8 @@ void printWalls(std::ostream& log, const System& sys) {
 
 void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const ThreadUse& threads,
                  const Integrator& integrator,
-                 const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes) {
+                 const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes,
+                 const std::vector<std::string>& inputNotes) {
     const std::size_t mobile = static_cast<std::size_t>(sys.sumOverRanks(static_cast<long>(sys.countMobile())));
     const std::size_t particles = static_cast<std::size_t>(sys.sumOverRanks(static_cast<long>(sys.particles.size())));
     log << "Case           : " << caseDir << "\n";
@@ -139,6 +140,7 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
         << "Walls          : " << sys.walls.size() << "\n";
     printWalls(log, sys);
     for (const std::string& note : pairNotes) log << "Pair mixed     : " << note << "\n";
+    for (const std::string& note : inputNotes) log << "Note           : " << note << "\n";
     if (!sys.bonds.empty())
         log << "Bonds          : " << sys.bonds.size() << " in " << sys.bonds.chainCount() << " chains, "
             << sys.bondPotential->description() << "; " << sys.bondedPairs.description() << "\n";
@@ -175,7 +177,8 @@ public:
         if (!restartForces) sys.computeForces();
         sys.dropGhosts();
         totalParticles_ = static_cast<double>(sys.sumOverRanks(static_cast<long>(sys.particles.size())));
-        printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes);
+        printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes,
+                    model.inputNotes);
         log_.flush();  // the set-up shows in a log file at once, not with the first report
         loop(sys, control, model, functions, *integrator);
     }

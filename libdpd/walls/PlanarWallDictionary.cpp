@@ -1,12 +1,16 @@
 // A planar wall read from its sub-dictionary of constant/dpdProperties' walls block.
+#include "walls/PlanarWallDictionary.hpp"
+
 #include "io/Dictionary.hpp"
-#include "walls/PlanarWall.hpp"
-#include "walls/StripedTunableSlipWall.hpp"
-#include "walls/TunableSlipWall.hpp"
+#include "walls/PlaneShape.hpp"
+#include "walls/TunableSlipLayer.hpp"
+#include "walls/WallRuleTypes.hpp"
 #include "walls/WallTypes.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
 namespace dpd {
 
@@ -53,7 +57,9 @@ TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff) {
 }
 
 PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadContext& c) {
-    wd.checkKeys({"type", "point", "normal", "velocity", "reflection", "alpha", "tunableSlip", "reverseFrame"});
+    std::vector<std::string> keys{"type", "point", "normal", "velocity", "tunableSlip"};
+    for (const std::string& k : wallRuleKeys()) keys.push_back(k);
+    wd.checkKeys(keys);
     PlanarWallSettings w;
     w.name = c.name;
     w.point = wd.get<Eigen::Vector3d>("point");
@@ -78,35 +84,28 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
     // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
     // since it adds no tangential friction of its own to the slip that gammaL sets.
     const std::string defaultRule = w.hasTunableSlip ? "specular" : "bounceBack";
-    try {
-        w.rule = reflectionRuleFromName(wd.getOrDefault<std::string>("reflection", defaultRule));
-    } catch (const std::invalid_argument& e) {
-        wd.fail("reflection", e.what());
-    }
-    // The bounce layer's thickness in cutoffs (docs/walls.md 3.2 step 5: about 0.06-0.1 works).
-    if (w.rule == ReflectionRule::bounceLayer) w.layer = wd.getPositive<double>("alpha") * c.cutoff;
-    else if (wd.found("alpha")) wd.fail("alpha", "only a wall with reflection bounceLayer has a layer thickness alpha");
-    // Every rule reverses relative to the wall (reverseFrame wall); bounceForward may do it in the lab frame.
-    if (wd.found("reverseFrame")) {
-        const std::string frame = wd.get<std::string>("reverseFrame");
-        if (frame != "wall" && frame != "lab") wd.fail("reverseFrame", "expected wall or lab, not '" + frame + "'");
-        w.reverseInLabFrame = frame == "lab";
-        if (w.reverseInLabFrame && w.rule != ReflectionRule::bounceForward)
-            wd.fail("reverseFrame", "lab: only a wall with reflection bounceForward reverses in the lab frame");
-    }
+    w.rule = readWallRule(wd, defaultRule, c.cutoff);
     return w;
 }
 
 }  // namespace
 
-std::unique_ptr<Wall> makePlanarWall(PlanarWallSettings settings, std::size_t index) {
-    if (settings.hasStripes) return std::make_unique<StripedTunableSlipWall>(std::move(settings), index);
-    if (settings.hasTunableSlip) return std::make_unique<TunableSlipWall>(std::move(settings), index);
-    return std::make_unique<PlanarWall>(std::move(settings));
+std::unique_ptr<Wall> makePlanarWall(const PlanarWallSettings& settings, std::size_t index) {
+    auto wall = std::make_unique<Wall>(settings.name, std::make_shared<PlaneShape>(settings.point, settings.normal),
+                                       settings.rule);
+    wall->sliding(settings.velocity);
+    if (settings.hasTunableSlip) {
+        std::optional<TunableSlipStripes> stripes;
+        if (settings.hasStripes) stripes = settings.stripes;
+        wall->withForce(std::make_shared<TunableSlipLayer>(settings.tunableSlip, stripes, index));
+    }
+    return wall;
 }
 
-std::unique_ptr<Wall> PlanarWall::New(const Dictionary& dict, const WallReadContext& context) {
-    return makePlanarWall(readPlanarWallSettings(dict, context), context.index);
+std::unique_ptr<Wall> readPlanarWall(const Dictionary& dict, const WallReadContext& context) {
+    PlanarWallSettings settings = readPlanarWallSettings(dict, context);
+    if (context.planes) context.planes->push_back(settings);
+    return makePlanarWall(settings, context.index);
 }
 
 }  // namespace dpd

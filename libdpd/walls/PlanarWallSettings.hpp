@@ -1,15 +1,17 @@
 #pragma once
 // What a planar wall is (the `plane` type of constant/dpdProperties' walls): the plane, the normal
 // into the fluid, its velocity, its reflection rule and, for a tunable-slip wall, its parameters.
-// Post-processing reads channels from it; walls/PlanarWall.hpp is what acts on the fluid.
+// Post-processing reads channels from it; makePlanarWall (walls/PlanarWallDictionary.hpp) makes the
+// Wall that acts on the fluid: a PlaneShape, the rule and, with tunable slip, a TunableSlipLayer.
 //
 // A moving wall slides in its own plane (its velocity has no normal component), so the plane maps
 // onto itself and only the wall's frozen particles move: they carry the wall's velocity
 // (WallList::assignFrozenVelocities) and drift with it like any particle.
-#include "walls/ReflectionRule.hpp"
+#include "walls/BounceBackRule.hpp"
 #include "walls/TunableSlipParameters.hpp"
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 
 namespace dpd {
@@ -19,11 +21,7 @@ struct PlanarWallSettings {
     Eigen::Vector3d point{0, 0, 0};
     Eigen::Vector3d normal{0, 0, 1};  // unit vector into the fluid
     Eigen::Vector3d velocity{0, 0, 0};
-    ReflectionRule rule = ReflectionRule::bounceBack;
-    double layer = 0.0;  // bounceLayer: thickness of the layer in front of the plane (alpha x cutoff)
-    // bounceForward: the velocity reversed relative to the wall (default) or in the lab frame (a
-    // reading of the published rule that a moving wall tells apart; tutorials/channel/slipSensitivity).
-    bool reverseInLabFrame = false;
+    std::shared_ptr<const WallRule> rule = std::make_shared<BounceBackRule>();
     // A smooth tunable-slip wall (Smiatek et al. 2008) acting on the fluid in front of the plane, in
     // place of frozen particles; the reflection rule stays as a safety net behind its WCA repulsion.
     bool hasTunableSlip = false;

@@ -1,21 +1,38 @@
 #pragma once
-// Passes of a planar wall over all particles go block by block, and look at particles one by one
-// (species, rule, forces, counters) only in the blocks where one lies closer to the wall than the
-// wall acts (behind it, in its bounce layer, within its tunable-slip reach): a test of a whole block
-// that the compiler vectorises. Few blocks hold one: those near the wall, and those of the walls' own
-// frozen particles.
+// Passes of a wall over all particles go a chunk of particles at a time: the shape first marks the
+// particles of the chunk that may lie closer to the wall than the wall acts (behind it, in its bounce
+// layer, within its tunable-slip reach) -- for a plane a test the compiler vectorises -- and only
+// those are looked at one by one (species, rule, forces, counters). Few are: those near the wall.
 #include "core/Particles.hpp"
-#include "walls/PlanarWallSettings.hpp"
+#include "walls/WallShape.hpp"
+#include "walls/WallStep.hpp"
+
+#include <algorithm>
+#include <cstdint>
 
 namespace dpd {
 
-inline constexpr long kWallBlock = 16;
+inline constexpr long kWallChunk = 1024;  // particles the shape marks in one call
 
-// Whether any of particles [begin, end) is less than `reach` in front of wall w (or behind it).
-inline bool anyWithin(const PlanarWallSettings& w, const Particles& p, long begin, long end, double reach) {
-    bool any = false;
-    for (long i = begin; i < end; ++i) any |= w.signedDistance(p.rx[i], p.ry[i], p.rz[i]) < reach;
-    return any;
+// visit(i) for every particle i the shape marks within `reach`, in parallel; returns the sum of the
+// counts visit returns.
+template <class Visit>
+WallCount forParticlesNear(const WallShape& shape, const Particles& p, double reach, const Visit& visit) {
+    const long n = static_cast<long>(p.size());
+    long returned = 0, crossed = 0, inside = 0;
+#pragma omp parallel for reduction(+ : returned, crossed, inside) schedule(static)
+    for (long c = 0; c < n; c += kWallChunk) {
+        const long end = std::min(c + kWallChunk, n);
+        std::uint8_t near[kWallChunk];
+        shape.markWithin(p, c, end, reach, near);
+        WallCount counts;
+        for (long i = c; i < end; ++i)
+            if (near[i - c]) visit(static_cast<std::size_t>(i), counts);
+        returned += counts.returned;
+        crossed += counts.crossed;
+        inside += counts.leftInside;
+    }
+    return {returned, crossed, inside};
 }
 
 }  // namespace dpd

@@ -1,6 +1,6 @@
 #include "walls/WallList.hpp"
 
-#include "walls/PlanarWall.hpp"
+#include "walls/PlanarWallDictionary.hpp"
 
 #include <algorithm>
 
@@ -29,27 +29,16 @@ void WallList::addPlane(const PlanarWallSettings& settings) {
     add(makePlanarWall(settings, walls_.size()));
 }
 
-std::vector<const PlanarWallSettings*> WallList::planes() const {
-    std::vector<const PlanarWallSettings*> planes;
-    for (const auto& w : walls_)
-        if (w->plane()) planes.push_back(w->plane());
-    return planes;
-}
-
 bool WallList::anyActsWithForces() const {
     return std::any_of(walls_.begin(), walls_.end(), [](const auto& w) { return w->actsWithForces(); });
-}
-
-bool WallList::anyTunableSlip() const {
-    return std::any_of(walls_.begin(), walls_.end(), [](const auto& w) { return w->plane() && w->plane()->hasTunableSlip; });
 }
 
 bool WallList::isInsideSolid(const Eigen::Vector3d& r) const {
     return std::any_of(walls_.begin(), walls_.end(), [&](const auto& w) { return w->isInsideSolid(r); });
 }
 
-std::string WallList::thinWall(const Box& box, double depth) const {
-    for (const PlanarWallSettings* w : planes()) {
+std::string WallList::thinWall(const std::vector<const PlanarWallSettings*>& planes, const Box& box, double depth) const {
+    for (const PlanarWallSettings* w : planes) {
         // Probe just short of `depth` behind the plane, wrapped into the box: it must still be solid.
         Eigen::Vector3d probe = w->point - w->normal * depth * 0.999;
         for (int a = 0; a < 3; ++a)
@@ -86,6 +75,15 @@ std::vector<long> WallList::assignFrozenVelocities(Particles& p, const std::vect
         ++carried[owner];
     }
     return carried;
+}
+
+WallList WallList::builtOn(const ShapeBuildContext& c) const {
+    WallList built;
+    for (const auto& w : walls_) {
+        std::shared_ptr<Wall> b = w->builtOn(c);
+        built.add(b ? b : w);
+    }
+    return built;
 }
 
 void WallList::recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozen) {

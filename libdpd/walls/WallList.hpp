@@ -28,25 +28,27 @@ struct WallCounters {
 class WallList {
 public:
     void add(std::shared_ptr<Wall> wall) { walls_.push_back(std::move(wall)); }
-    // Adds a planar wall: a tunable-slip wall when the settings have tunable slip, else a plain one.
+    // Adds the planar wall of these settings (makePlanarWall).
     void addPlane(const PlanarWallSettings& settings);
     bool empty() const { return walls_.empty(); }
     std::size_t size() const { return walls_.size(); }
     const Wall& operator[](std::size_t i) const { return *walls_[i]; }
-    // The planes of the planar walls, in order.
-    std::vector<const PlanarWallSettings*> planes() const;
     bool anyActsWithForces() const;
-    bool anyTunableSlip() const;
 
     // True if the point is inside any wall's solid.
     bool isInsideSolid(const Eigen::Vector3d& r) const;
-    // The name of the first planar wall whose solid, within the periodic box, is less than `depth`
-    // thick (fluid on one side would then feel the fluid on the other through the wall); empty if none.
-    std::string thinWall(const Box& box, double depth) const;
+    // The name of the first of these planes whose solid (of all the walls), within the periodic box, is
+    // less than `depth` thick (fluid on one side would then feel the fluid on the other through the
+    // wall), or which lies on a face of the box; empty if none.
+    std::string thinWall(const std::vector<const PlanarWallSettings*>& planes, const Box& box, double depth) const;
     // Every frozen particle inside a wall that carries frozen particles takes that wall's velocity:
     // the wall whose surface is nearest among those the particle is inside. Returns how many frozen
     // particles each wall carries.
     std::vector<long> assignFrozenVelocities(Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies) const;
+
+    // The list with every wall whose shape is built on the run's box (a geometry) built on it; the
+    // other walls shared.
+    WallList builtOn(const ShapeBuildContext& c) const;
 
     void recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies);
     void addForces(WallStep& s) const;

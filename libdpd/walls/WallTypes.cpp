@@ -1,5 +1,6 @@
 // The wall types a case can name: one line per type.
-#include "walls/PlanarWall.hpp"
+#include "walls/GeometryWallDictionary.hpp"
+#include "walls/PlanarWallDictionary.hpp"
 #include "walls/WallTypes.hpp"
 
 namespace dpd {
@@ -7,7 +8,8 @@ namespace dpd {
 const WallRegistry& wallRegistry() {
     static const WallRegistry types = [] {
         WallRegistry r;
-        r.add("plane", &PlanarWall::New);
+        r.add("plane", &readPlanarWall);
+        r.add("geometry", &readGeometryWall);
         return r;
     }();
     return types;

@@ -1,11 +1,14 @@
 #pragma once
-// The wall types a case can name in constant/dpdProperties' walls block (`type plane;`): each type
+// The wall types a case can name in constant/dpdProperties' walls block (`type plane;`, `type geometry;`): each type
 // reads its own sub-dictionary. Adding a type adds its files and one line in WallTypes.cpp.
 #include "core/Registry.hpp"
+#include "walls/PlanarWallSettings.hpp"
 #include "walls/Wall.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace dpd {
 
@@ -17,6 +20,10 @@ struct WallReadContext {
     std::size_t index = 0;  // its place in the list (keeps its random streams apart)
     int dimension = 3;
     double cutoff = 1.0;
+    std::shared_ptr<const Dictionary> geometry;  // the case's geometry block (null: none)
+    // Where a planar wall leaves its settings, for the builders and post-processing that fit channels
+    // between planes (null: nowhere).
+    std::vector<PlanarWallSettings>* planes = nullptr;
 };
 
 using WallRegistry = Registry<Wall, const Dictionary&, const WallReadContext&>;

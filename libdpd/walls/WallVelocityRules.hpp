@@ -1,7 +1,7 @@
 #pragma once
 // The velocity a wall gives a particle it returns, for a wall at rest locally with unit normal n
-// into the fluid (docs/walls.md 3.2-3.3). Velocities are relative to the wall. Shared by planar walls
-// (PlanarWall) and walls of any shape (GeometryWall), which differ only in where n comes from.
+// into the fluid (docs/walls.md 3.2-3.3). Velocities are relative to the wall. Used by the rules
+// (walls/*Rule.hpp), whatever the shape of the wall: the shape only says where n comes from.
 // Random draws are keyed by (step, particle id, stream), so they do not depend on the thread count;
 // `stream` keeps the draws of different kinds of wall apart.
 #include "core/Box.hpp"

@@ -1,13 +1,16 @@
-// Walls of any shape (walls/GeometryWall): particles that step into the solid are put back on the
-// side they came from, even across a solid one pixel thick that they would step right over; the
-// reflection rules act with the field's normal; the bounce layer emits the flux-weighted Maxwellian;
-// the outcome does not depend on the thread count; and the field's normals of a disc mask are within
-// a few degrees of the analytic ones.
+// Walls of any shape (walls/GeometryShape with any walls/WallRule): particles that step into the solid
+// are put back on the side they came from, even across a solid one pixel thick that they would step
+// right over; the reflection rules act with the field's normal; the bounce layer emits the
+// flux-weighted Maxwellian; the outcome does not depend on the thread count; on a curved wall (a disc)
+// specular reflection keeps the speed, the bounce layer turns approaching particles round and
+// bounce-forward mirrors a crossing and reverses its velocity at the end of the step.
 #include "GeometryTestFiles.hpp"
 
 #include "geometry/GeometryDictionary.hpp"
 #include "io/Dictionary.hpp"
-#include "walls/GeometryWall.hpp"
+#include "../support/WallRuleNamed.hpp"
+#include "walls/GeometryShape.hpp"
+#include "walls/Wall.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -23,7 +26,7 @@ namespace {
 const std::vector<std::uint8_t> kMobile{0};
 
 // One application of the wall to the particles after a move (dt plays no part in reflections).
-WallCount reflectOnce(const GeometryWall& w, Particles& p, const Box& box, const PairRandom& random,
+WallCount reflectOnce(const Wall& w, Particles& p, const Box& box, const PairRandom& random,
                       std::uint64_t step, double kT) {
     std::vector<DeferredCrossing> deferred;
     WallStep s{p, kMobile, box, random, step, kT, 0.01, deferred, {}};
@@ -40,14 +43,15 @@ protected:
     static constexpr double kLeft = 4.0, kRight = 4.25;
     Box box = box2d(8.0, 8.0);
 
-    GeometryWall wall(ReflectionRule rule, double layer = 0.0) {
+    Wall wall(const std::string& rule, double layer = 0.0) {
         Picture pic(32, std::vector<int>(32, 255));
         for (auto& row : pic) row[16] = 0;
         writePgm(path("wall.pgm"), pic);
         const Dictionary d = Dictionary::parse("type imageMask; file \"" + path("wall.pgm") +
                                                    "\"; solidValues (0); pixelSize 0.25; gridSpacing 0.125; smooth no;",
                                                "geometryDict");
-        return GeometryWall(readSolidRegion(d, "", box, 1.0).distance, rule, layer);
+        return Wall("geometry", std::make_shared<GeometryShape>(readSolidRegion(d, "", box, 1.0).distance),
+                    test::ruleNamed(rule, layer));
     }
 
     // Particles on both sides of the wall, moving towards it by up to 1.6 in one step (more than six
@@ -73,8 +77,8 @@ protected:
 };
 
 TEST_F(ThinWall, AOnePixelSolidStopsEveryParticleOnTheSideItCameFrom) {
-    for (const ReflectionRule rule : {ReflectionRule::bounceBack, ReflectionRule::specular, ReflectionRule::maxwellian}) {
-        GeometryWall w = wall(rule);
+    for (const std::string rule : {"bounceBack", "specular", "maxwellian"}) {
+        Wall w = wall(rule);
         Particles p = approaching(4000, 3);
         const Particles before = p;
         w.recordPositions(p, kMobile);
@@ -83,7 +87,7 @@ TEST_F(ThinWall, AOnePixelSolidStopsEveryParticleOnTheSideItCameFrom) {
         for (std::size_t i = 0; i < p.size(); ++i) expectCrossed += p.rx[i] > kLeft && p.rx[i] < box.hi.x() && before.rx[i] < kLeft ? 1
                                                                     : p.rx[i] < kRight && before.rx[i] > kRight ? 1 : 0;
         const WallCount c = reflectOnce(w, p, box, PairRandom(7), 1, 1.0);
-        EXPECT_EQ(c.crossed, expectCrossed) << reflectionRuleName(rule);
+        EXPECT_EQ(c.crossed, expectCrossed) << rule;
         EXPECT_GT(c.crossed, 1000);  // most of them would have stepped over (or into) the wall
         EXPECT_EQ(c.returned, c.crossed);
         EXPECT_EQ(c.leftInside, 0);
@@ -98,10 +102,10 @@ TEST_F(ThinWall, AOnePixelSolidStopsEveryParticleOnTheSideItCameFrom) {
             const bool met = left ? endX > kLeft : endX < kRight;
             if (met) EXPECT_NEAR(p.rx[i], 2.0 * metFace - endX, 1e-5) << i;
             // Leaving the face it met.
-            if (met && rule != ReflectionRule::maxwellian) EXPECT_EQ(p.vx[i] > 0, !left) << i;
-            if (met && rule == ReflectionRule::bounceBack) EXPECT_DOUBLE_EQ(p.vz[i], -before.vz[i]);
-            if (met && rule == ReflectionRule::specular) EXPECT_DOUBLE_EQ(p.vz[i], before.vz[i]);
-            if (met && rule == ReflectionRule::specular) EXPECT_NEAR(p.vx[i], -before.vx[i], 1e-5);
+            if (met && rule != "maxwellian") EXPECT_EQ(p.vx[i] > 0, !left) << i;
+            if (met && rule == "bounceBack") EXPECT_DOUBLE_EQ(p.vz[i], -before.vz[i]);
+            if (met && rule == "specular") EXPECT_DOUBLE_EQ(p.vz[i], before.vz[i]);
+            if (met && rule == "specular") EXPECT_NEAR(p.vx[i], -before.vx[i], 1e-5);
         }
     }
 }
@@ -112,7 +116,7 @@ TEST_F(ThinWall, AOnePixelSolidStopsEveryParticleOnTheSideItCameFrom) {
 // turned particles the mean is held to 4 standard errors, 4 x 0.655 sqrt(kT / n).
 TEST_F(ThinWall, TheBounceLayerEmitsTheFluxWeightedMaxwellian) {
     const double kT = 1.5, layer = 0.1;
-    GeometryWall w = wall(ReflectionRule::bounceLayer, layer);
+    Wall w = wall("bounceLayer", layer);
     Particles p;
     std::mt19937 gen(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -139,7 +143,7 @@ TEST_F(ThinWall, TheBounceLayerEmitsTheFluxWeightedMaxwellian) {
 }
 
 TEST_F(ThinWall, TheOutcomeDoesNotDependOnTheThreadCount) {
-    GeometryWall w = wall(ReflectionRule::bounceLayer, 0.1);
+    Wall w = wall("bounceLayer", 0.1);
     Particles results[2];
     for (const int threads : {1, 2}) {
         omp_set_num_threads(threads);
@@ -155,45 +159,71 @@ TEST_F(ThinWall, TheOutcomeDoesNotDependOnTheThreadCount) {
     EXPECT_EQ(results[0].vz, results[1].vz);
 }
 
-// A disc of radius 3 (30 pixels of 0.1, as in ImageMaskTest): particles stepping into it are put back
-// outside along the normal, and a specular reflection keeps their speed.
-class DiscWall : public ScratchDirectory {};
+// A disc of radius 3 (30 pixels of 0.1, as in ImageMaskTest) in a 2-D box 12.8 x 12.8.
+class DiscWall : public ScratchDirectory {
+protected:
+    static constexpr int kPixels = 128;
+    static constexpr double kPixel = 0.1, kRadius = 3.0;
+    // The contour lies within p/2 + p^2/R of the circle (ImageMaskTest).
+    static constexpr double kContour = 0.5 * kPixel + kPixel * kPixel / kRadius;
+    const Eigen::Vector3d centre{6.4, 0.0, 6.4};
+    const Box box = box2d(kPixels * kPixel, kPixels * kPixel);
+
+    Wall disc(const std::string& rule, double alpha = 0.0) {
+        Picture pic(kPixels, std::vector<int>(kPixels, 255));
+        for (int r = 0; r < kPixels; ++r)
+            for (int c = 0; c < kPixels; ++c)
+                if ((Eigen::Vector3d((c + 0.5) * kPixel, 0.0, (kPixels - 1 - r + 0.5) * kPixel) - centre).norm() < kRadius)
+                    pic[r][c] = 0;
+        writePng(path("disc.png"), pic);
+        const Dictionary d = Dictionary::parse("type imageMask; file \"" + path("disc.png") +
+                                                   "\"; solidValues (0); pixelSize 0.1; gridSpacing 0.1;",
+                                               "geometryDict");
+        return Wall("disc", std::make_shared<GeometryShape>(readSolidRegion(d, "", box, 1.0).distance),
+                    test::ruleNamed(rule, alpha));
+    }
+    // n particles at distance [from, from + width) outside the circle, moving inwards by `along`
+    // (0.1..0.3 per unit time, tilted up to 0.3 rad off the radius).
+    Particles around(int n, double from, double width, unsigned seed) const {
+        Particles parts;
+        std::mt19937 gen(seed);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        for (int i = 0; i < n; ++i) {
+            const double phi = 2.0 * M_PI * u(gen), along = 0.1 + 0.2 * u(gen), tilt = 0.6 * (u(gen) - 0.5);
+            const Eigen::Vector3d radial(std::cos(phi), 0.0, std::sin(phi)), tangent(-std::sin(phi), 0.0, std::cos(phi));
+            const Eigen::Vector3d r = centre + (kRadius + from + width * u(gen)) * radial;
+            const Eigen::Vector3d v = along * (-radial + tilt * tangent);
+            parts.add(i, 0, r.x(), 0.0, r.z(), v.x(), 0.0, v.z());
+        }
+        return parts;
+    }
+    static void move(Particles& p) {
+        for (std::size_t i = 0; i < p.size(); ++i) p.rx[i] += p.vx[i], p.rz[i] += p.vz[i];
+    }
+    // The particles in the fluid by the wall's own distance field (the contour is not the circle).
+    static Particles outside(const Wall& w, const Particles& p) {
+        Particles kept;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if (w.signedDistance({p.rx[i], p.ry[i], p.rz[i]}) >= 0.0)
+                kept.add(kept.size(), 0, p.rx[i], p.ry[i], p.rz[i], p.vx[i], p.vy[i], p.vz[i]);
+        return kept;
+    }
+};
 
 TEST_F(DiscWall, ParticlesEnteringADiscAreMirroredBackOut) {
-    const int n = 128;
-    const double p = 0.1, R = 3.0;
-    const Eigen::Vector3d centre(6.4, 0.0, 6.4);
-    Picture pic(n, std::vector<int>(n, 255));
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c)
-            if (Eigen::Vector3d((c + 0.5) * p, 0.0, (n - 1 - r + 0.5) * p).operator-(centre).norm() < R) pic[r][c] = 0;
-    writePng(path("disc.png"), pic);
-    const Dictionary d = Dictionary::parse("type imageMask; file \"" + path("disc.png") +
-                                               "\"; solidValues (0); pixelSize 0.1; gridSpacing 0.1;",
-                                           "geometryDict");
-    const Box box = box2d(n * p, n * p);
-    GeometryWall w(readSolidRegion(d, "", box, 1.0).distance, ReflectionRule::specular, 0.0);
-    Particles parts;
-    std::mt19937 gen(1);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    for (int i = 0; i < 2000; ++i) {
-        // Start 0.05..0.25 outside, step 0.1..0.3 inwards (a mixture of normal and tangential).
-        const double phi = 2.0 * M_PI * u(gen), along = 0.1 + 0.2 * u(gen), tilt = 0.6 * (u(gen) - 0.5);
-        const Eigen::Vector3d radial(std::cos(phi), 0.0, std::sin(phi)), tangent(-std::sin(phi), 0.0, std::cos(phi));
-        const Eigen::Vector3d r = centre + (R + 0.05 + 0.2 * u(gen)) * radial;
-        const Eigen::Vector3d v = along * (-radial + tilt * tangent);
-        parts.add(i, 0, r.x(), 0.0, r.z(), v.x(), 0.0, v.z());
-    }
+    const double R = kRadius;
+    Wall w = disc("specular");
+    // Start 0.05..0.25 outside, step 0.1..0.3 inwards (a mixture of normal and tangential).
+    Particles parts = around(2000, 0.05, 0.2, 1);
     const Particles before = parts;
     w.recordPositions(parts, kMobile);
-    for (std::size_t i = 0; i < parts.size(); ++i) parts.rx[i] += parts.vx[i], parts.rz[i] += parts.vz[i];
+    move(parts);
     const WallCount c = reflectOnce(w, parts, box, PairRandom(1), 1, 1.0);
     EXPECT_GT(c.crossed, 500);
     EXPECT_EQ(c.leftInside, 0);
-    // The contour lies within p/2 + p^2/R of the circle (ImageMaskTest), so a returned particle is
-    // at least that close to being outside it, and its mirror image is at most 2 (depth + that) from
+    // A returned particle is at least kContour close to being outside it, and its mirror image is at most 2 (depth + that) from
     // where it ended.
-    const double contour = 0.5 * p + p * p / R;
+    const double contour = kContour;
     for (std::size_t i = 0; i < parts.size(); ++i) {
         const Eigen::Vector3d r(parts.rx[i], 0.0, parts.rz[i]);
         EXPECT_GT((r - centre).norm(), R - contour) << i;
@@ -202,6 +232,79 @@ TEST_F(DiscWall, ParticlesEnteringADiscAreMirroredBackOut) {
         EXPECT_LE((r - end).norm(), 2.0 * (depth + contour)) << i;
         const Eigen::Vector3d v(parts.vx[i], 0.0, parts.vz[i]), v0(before.vx[i], 0.0, before.vz[i]);
         EXPECT_NEAR(v.norm(), v0.norm(), 1e-6);  // specular keeps the speed
+    }
+}
+
+// The bounce layer on a curved surface: a particle within alpha r_c of the disc (by the field's
+// distance) moving towards it leaves with its velocity along the surface (the field's tangent)
+// reversed and a normal speed from the flux-weighted Maxwellian, mean sqrt(pi kT / 2) held to 4
+// standard errors, 4 x 0.655 sqrt(kT / n); particles leaving it or beyond it are left alone.
+TEST_F(DiscWall, TheBounceLayerTurnsApproachingParticlesRoundOnACurvedWall) {
+    const double kT = 1.2, alpha = 0.1;
+    Wall w = disc("bounceLayer", alpha);
+    Particles p = outside(w, around(6000, -0.05, 0.25, 4));
+    w.recordPositions(p, kMobile);  // no move: the layer alone acts
+    const Particles before = p;
+    const WallCount c = reflectOnce(w, p, box, PairRandom(5), 2, kT);
+    EXPECT_EQ(c.crossed, 0);
+    long turned = 0;
+    double speedSum = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Eigen::Vector3d r(before.rx[i], 0.0, before.rz[i]);
+        const SurfaceDistance s = w.shape().surfaceAt(r);
+        const Eigen::Vector3d v0(before.vx[i], 0.0, before.vz[i]), v(p.vx[i], 0.0, p.vz[i]);
+        const bool caught = s.distance >= 0.0 && s.distance < alpha && s.normal.squaredNorm() > 0.0 && v0.dot(s.normal) < 0.0;
+        if (!caught) {
+            EXPECT_EQ(v, v0) << i;
+            continue;
+        }
+        ++turned;
+        const Eigen::Vector3d n = s.normal, t0 = v0 - v0.dot(n) * n, t = v - v.dot(n) * n;
+        EXPECT_GT(v.dot(n), 0.0) << i;
+        EXPECT_LT((t + t0).norm(), 1e-12) << i;
+        speedSum += v.dot(n);
+    }
+    EXPECT_EQ(c.returned, turned);
+    ASSERT_GT(turned, 1000) << "the layer must catch enough particles for the mean to be decisive";
+    EXPECT_NEAR(speedSum / turned, std::sqrt(M_PI * kT / 2.0), 4.0 * 0.655 * std::sqrt(kT / turned));
+}
+
+// Bounce-forward on a curved surface: a particle that stepped into the disc is left where it is until
+// the end of the step, then goes to its mirror image across the surface with its velocity reversed
+// (the wall is at rest); the others are untouched.
+TEST_F(DiscWall, BounceForwardMirrorsACrossingAndReversesItsVelocityAfterTheStep) {
+    Wall w = disc("bounceForward");
+    Particles p = around(2000, 0.05, 0.2, 6);
+    const Particles before = p;
+    w.recordPositions(p, kMobile);
+    move(p);
+    const Particles moved = p;
+    std::vector<DeferredCrossing> deferred;
+    WallStep s{p, kMobile, box, PairRandom(2), 1, 1.0, 0.01, deferred, {}};
+    const WallCount c = w.reflect(s, 0);
+    EXPECT_GT(c.crossed, 500);
+    EXPECT_EQ(c.returned, c.crossed);
+    ASSERT_EQ(static_cast<long>(deferred.size()), c.crossed);
+    EXPECT_EQ(p.rx, moved.rx) << "nothing moves before the end of the step";
+    EXPECT_EQ(p.vx, moved.vx);
+    std::vector<bool> crossed(p.size(), false);
+    for (const DeferredCrossing& d : deferred) {
+        const std::size_t i = d.id;  // ids are the particles' indices here
+        crossed[i] = true;
+        w.completeCrossing(p, i, d, box);
+    }
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Eigen::Vector3d r(p.rx[i], 0.0, p.rz[i]), end(moved.rx[i], 0.0, moved.rz[i]);
+        const Eigen::Vector3d v(p.vx[i], 0.0, p.vz[i]), v0(before.vx[i], 0.0, before.vz[i]);
+        if (!crossed[i]) {
+            EXPECT_EQ(r, end) << i;
+            EXPECT_EQ(v, v0) << i;
+            continue;
+        }
+        EXPECT_GT((r - centre).norm(), kRadius - kContour) << i;
+        const double depth = std::max(0.0, kRadius - (end - centre).norm());
+        EXPECT_LE((r - end).norm(), 2.0 * (depth + kContour)) << i;
+        EXPECT_EQ(v, Eigen::Vector3d(-v0)) << i;
     }
 }
 

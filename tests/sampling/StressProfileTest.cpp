@@ -3,6 +3,7 @@
 // fluid against an accurate reference for its state point (Groot-Warren's equation of state printed
 // beside it), and the shear stress of periodic Poiseuille flow against the exact momentum balance
 // sigma_xz(z) = -rho g (z - z_c).
+#include "../support/WallRuleNamed.hpp"
 #include "forces/ReversePoiseuilleBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
@@ -135,7 +136,7 @@ static void checkMovedParticlesCounted(const Eigen::Vector3d& aspect) {
         w.point = Eigen::Vector3d(0, 0, side < 0 ? sys.box.lo.z() + 1.0 : sys.box.hi.z() - 1.0);
         w.normal = Eigen::Vector3d(0, 0, -side);
         w.velocity = Eigen::Vector3d(2.0 * side, 0, 0);
-        w.rule = ReflectionRule::bounceForward;
+        w.rule = test::ruleNamed("bounceForward");
         sys.walls.addPlane(w);
     }
     sys.initialise();

@@ -1,6 +1,7 @@
 // Trajectories are a function of the state and the seed alone: bit-identical on one thread and on two
 // (the slab-coloured pair loop fixes the summation order; the random numbers are keyed by seed, step
 // and ids), identical for the same seed, different for different seeds.
+#include "../support/WallRuleNamed.hpp"
 #include "forces/UniformBodyForce.hpp"
 #include "integrators/EulerIntegrator.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
@@ -88,13 +89,13 @@ System channel(std::uint64_t seed, double fluidWallA = 25.0) {
     lower.name = "lower";
     lower.point = Eigen::Vector3d(0, 0, 1.0);
     lower.normal = Eigen::Vector3d(0, 0, 1);
-    lower.rule = ReflectionRule::maxwellian;
+    lower.rule = test::ruleNamed("maxwellian");
     PlanarWallSettings upper;
     upper.name = "upper";
     upper.point = Eigen::Vector3d(0, 0, 10.0);
     upper.normal = Eigen::Vector3d(0, 0, -1);
     upper.velocity = Eigen::Vector3d(0.5, 0, 0);
-    upper.rule = ReflectionRule::bounceBack;
+    upper.rule = test::ruleNamed("bounceBack");
     sys.walls.addPlane(lower);
     sys.walls.addPlane(upper);
     sys.bodyForce = std::make_shared<UniformBodyForce>(Eigen::Vector3d(0.2, 0, 0));

@@ -7,7 +7,8 @@
 #include "geometry/GeometryDictionary.hpp"
 #include "io/Dictionary.hpp"
 #include "system/Monitors.hpp"
-#include "walls/GeometryWall.hpp"
+#include "../support/WallRuleNamed.hpp"
+#include "walls/GeometryShape.hpp"
 #include "setup/StandardFluid.hpp"
 
 #include <gtest/gtest.h>
@@ -84,8 +85,8 @@ struct MaskedChannel : public geometryTest::ScratchDirectory {
         text << std::setprecision(17) << "type imageMask; file \"" << path("channel.pgm")
              << "\"; solidValues (0); pixelSize " << pixel << ";";
         const Dictionary d = Dictionary::parse(text.str(), "geometryDict");
-        sys.walls.add(std::make_shared<GeometryWall>(readSolidRegion(d, "", sys.box, 1.0).distance,
-                                                     ReflectionRule::bounceBack, 0.0));
+        sys.walls.add(std::make_shared<Wall>("geometry", std::make_shared<GeometryShape>(readSolidRegion(d, "", sys.box, 1.0).distance),
+                                             test::ruleNamed("bounceBack")));
     }
     // The published Poiseuille scene's centre-line speed (u_max 14.6 in d = 40) on the channel's
     // parabola, modulated along x by a factor 1 +- 0.5 (a flow through a contraction varies along

@@ -3,6 +3,7 @@
 // gas and no-slip sectors has the same temperature and density (the wall's random force matches its
 // friction in every sector, so the stripes are a heat bath at kT everywhere); a box that does not hold
 // whole periods is refused.
+#include "../support/WallRuleNamed.hpp"
 #include "case/DpdProperties.hpp"
 #include "core/Error.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
@@ -10,7 +11,7 @@
 #include "sampling/BlockStatistics.hpp"
 #include "setup/InitialConditions.hpp"
 #include "system/System.hpp"
-#include "walls/StripedTunableSlipWall.hpp"
+#include "walls/PlanarWallDictionary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,7 +27,7 @@ PlanarWallSettings stripedWall(const std::string& name, double z, double normalZ
     w.name = name;
     w.point = Eigen::Vector3d(0, 0, z);
     w.normal = Eigen::Vector3d(0, 0, normalZ);
-    w.rule = ReflectionRule::specular;
+    w.rule = test::ruleNamed("specular");
     w.hasTunableSlip = true;
     w.tunableSlip.gammaL = gammaL;
     w.tunableSlip.zc = 1.0;
@@ -121,7 +122,7 @@ TEST(StripedTunableSlipWall, AtRestTheFluidIsTheSameInFrontOfEverySector) {
         const Particles& p = sys.particles;
         for (std::size_t i = 0; i < p.size(); ++i) {
             if (std::abs(p.rz[i]) < 2.0) continue;  // within zc of a wall
-            const int gas = sys.walls[0].plane()->stripes.isGas(p.rx[i]) ? 1 : 0;
+            const int gas = stripedWall("lower", -3.0, 1, 4.0, 0.1, 5.0).stripes.isGas(p.rx[i]) ? 1 : 0;
             v2[gas] += p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i] + p.vz[i] * p.vz[i];
             n[gas] += 1;
         }
@@ -146,7 +147,8 @@ TEST(StripedTunableSlipWall, AtRestTheFluidIsTheSameInFrontOfEverySector) {
 
 TEST(StripedTunableSlipWall, ABoxWithoutWholePeriodsIsRefused) {
     const PlanarWallSettings w = stripedWall("lower", -3, 1, 4.0, 0.1, 3.0);
-    const StripedTunableSlipWall wall(w, 0);
+    const std::unique_ptr<Wall> striped = makePlanarWall(w, 0);
+    const Wall& wall = *striped;
     Box box;
     box.lo = Eigen::Vector3d(0, 0, -4);
     box.hi = Eigen::Vector3d(10, 3, 4);

@@ -2,6 +2,7 @@
 // values, fluctuation-dissipation (a gas held only by the walls takes the walls' temperature), the WCA
 // wall keeping a DPD fluid out (dt up to sigma / 50), thread independence, the predicted slip length, and the
 // errors of constant/dpdProperties.
+#include "../support/WallRuleNamed.hpp"
 #include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "forces/UniformBodyForce.hpp"
@@ -11,7 +12,7 @@
 #include "setup/InitialConditions.hpp"
 #include "system/System.hpp"
 #include "sampling/BlockStatistics.hpp"
-#include "walls/TunableSlipWall.hpp"
+#include "walls/PlanarWallDictionary.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -42,7 +43,7 @@ PlanarWallSettings tunableWall(const std::string& name, double z, double normalZ
     w.point = Eigen::Vector3d(0, 0, z);
     w.normal = Eigen::Vector3d(0, 0, normalZ);
     w.velocity = velocity;
-    w.rule = ReflectionRule::specular;
+    w.rule = test::ruleNamed("specular");
     w.hasTunableSlip = true;
     w.tunableSlip = t;
     return w;
@@ -393,8 +394,8 @@ TEST(TunableSlipWall, DictionaryEntriesAreRead) {
                              "  tunableSlip { gammaL 2; zc 1.5; epsilon 0.8; sigma 0.4; fluidBehind { a 20; density 4; } } }\n"
                              "  upper { type plane; point (0 0 3); normal (0 0 -1); } }\n";
     const DpdModel m = readDpdModel(Dictionary::parse(text, "constant/dpdProperties"));
-    ASSERT_EQ(m.walls.planes().size(), 2u);
-    const PlanarWallSettings& w = *m.walls.planes()[0];
+    ASSERT_EQ(m.planes().size(), 2u);
+    const PlanarWallSettings& w = *m.planes()[0];
     ASSERT_TRUE(w.hasTunableSlip);
     EXPECT_TRUE(m.walls[0].actsWithForces()) << "a plane with tunableSlip is a tunable-slip wall";
     EXPECT_EQ(w.tunableSlip.gammaL, 2.0);
@@ -405,11 +406,10 @@ TEST(TunableSlipWall, DictionaryEntriesAreRead) {
     EXPECT_EQ(w.tunableSlip.behindA, 20.0);
     EXPECT_EQ(w.tunableSlip.behindDensity, 4.0);
     EXPECT_EQ(w.tunableSlip.cutoff, 1.0) << "the fluid behind reaches as far as the case's cutoff";
-    EXPECT_EQ(w.rule, ReflectionRule::specular);  // the safety net's default behind a tunable-slip wall
-    EXPECT_FALSE(m.walls.planes()[1]->hasTunableSlip);
+    EXPECT_EQ(w.rule->description(), "specular");  // the safety net's default behind a tunable-slip wall
+    EXPECT_FALSE(m.planes()[1]->hasTunableSlip);
     EXPECT_FALSE(m.walls[1].actsWithForces());
-    EXPECT_EQ(m.walls.planes()[1]->rule, ReflectionRule::bounceBack);
-    EXPECT_TRUE(m.walls.anyTunableSlip());
+    EXPECT_EQ(m.planes()[1]->rule->description(), "bounceBack");
 }
 
 // Each bad entry names the file, the line (the tunableSlip block is on line 12 of the text) and the keyword.

@@ -1,7 +1,8 @@
-// The wall interface (walls/Wall.hpp, WallList.*): a wall of a kind the System has never heard of is run
-// like the built-in ones -- its forces with the pair forces, its reflection after each move, the
-// crossings it deferred completed by it (not by another wall) at the end of the step, its record of
-// positions before the first step and after each one -- and wall types are chosen by name.
+// The wall's parts (walls/Wall.hpp, WallList.*): a shape, a rule and a surface force the System has
+// never heard of run like the built-in ones -- the force with the pair forces, the crossing after each
+// move, the crossings deferred completed by that wall (not by another) at the end of the step, the
+// record of positions before the first step and after each one -- and wall types are chosen by name.
+#include "../support/WallRuleNamed.hpp"
 #include "case/DpdProperties.hpp"
 #include "core/Error.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
@@ -18,47 +19,70 @@ using namespace dpd;
 
 namespace {
 
-// A solid ball that pushes every particle in front of it with a constant force, defers each crossing
-// and, at the end of the step, puts the particle back on the surface where it was recorded.
-class BallWall : public Wall {
+// A new shape (a solid ball), a new rule (each crossing deferred, the particle put back on the surface
+// at the end of the step with its velocity kept) and a new surface force (a constant push), each
+// logging its calls.
+class BallShape : public WallShape {
 public:
-    BallWall(Eigen::Vector3d centre, double radius, std::vector<std::string>& calls)
-        : Wall("ball"), centre_(std::move(centre)), radius_(radius), calls_(calls) {}
+    BallShape(Eigen::Vector3d centre, double radius, std::vector<std::string>& calls)
+        : centre_(std::move(centre)), radius_(radius), calls_(calls) {}
     std::string description() const override { return "a ball of radius " + std::to_string(radius_); }
     double signedDistance(const Eigen::Vector3d& r) const override { return (r - centre_).norm() - radius_; }
-    void markFlowAxes(const Box&, std::array<bool, 3>& varies) const override { varies = {true, true, true}; }
-    bool actsWithForces() const override { return true; }
-    void addForces(WallStep& s) const override {
-        calls_.push_back("forces");
-        for (std::size_t i = 0; i < s.particles.size(); ++i) s.particles.fx[i] += kPush;
+    SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override {
+        return {signedDistance(r), (r - centre_).normalized()};
+    }
+    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box&, SurfaceDistance& atEnd) const override {
+        calls_.push_back("reflect");
+        const Eigen::Vector3d r(p.rx[i], p.ry[i], p.rz[i]);
+        atEnd = surfaceAt(r);
+        if (atEnd.distance >= 0.0) return {};
+        return {true, centre_ + radius_ * (r - centre_).normalized(), atEnd.normal};
     }
     void recordPositions(const Particles&, const std::vector<std::uint8_t>&) override { calls_.push_back("record"); }
-    WallCount reflect(WallStep& s, std::uint32_t index) const override {
-        calls_.push_back("reflect");
-        WallCount c;
-        for (std::size_t i = 0; i < s.particles.size(); ++i) {
-            const Eigen::Vector3d r(s.particles.rx[i], s.particles.ry[i], s.particles.rz[i]);
-            if (!isInsideSolid(r)) continue;
-            ++c.crossed;
-            ++c.returned;
-            const Eigen::Vector3d out = centre_ + radius_ * (r - centre_).normalized();
-            s.deferred.push_back({s.particles.id[i], index, out.x(), out.y(), out.z()});
-        }
-        return c;
-    }
-    void completeCrossing(Particles& p, std::size_t i, const DeferredCrossing& d, const Box&) const override {
-        calls_.push_back("complete");
-        p.rx[i] = d.x;
-        p.ry[i] = d.y;
-        p.rz[i] = d.z;
-    }
-    static constexpr double kPush = 0.5;
+    void markFlowAxes(const Box&, std::array<bool, 3>& varies) const override { varies = {true, true, true}; }
+    std::uint32_t reflectionStream() const override { return kStreamReflection; }
 
 private:
     Eigen::Vector3d centre_;
     double radius_;
     std::vector<std::string>& calls_;
 };
+
+class DeferringRule : public WallRule {
+public:
+    explicit DeferringRule(std::vector<std::string>& calls) : calls_(calls) {}
+    std::string description() const override { return "deferring"; }
+    bool defersCrossing() const override { return true; }
+    Eigen::Vector3d atSurface(const Eigen::Vector3d& v, const Eigen::Vector3d&, const RuleDraw&) const override { return v; }
+    Eigen::Vector3d completed(const Eigen::Vector3d& v, const Eigen::Vector3d&) const override {
+        calls_.push_back("complete");
+        return v;
+    }
+
+private:
+    std::vector<std::string>& calls_;
+};
+
+class PushForce : public SurfaceForce {
+public:
+    explicit PushForce(std::vector<std::string>& calls) : calls_(calls) {}
+    std::string description() const override { return "a push"; }
+    void addForces(WallStep& s, const WallShape&, const Eigen::Vector3d&) const override {
+        calls_.push_back("forces");
+        for (std::size_t i = 0; i < s.particles.size(); ++i) s.particles.fx[i] += kPush;
+    }
+    static constexpr double kPush = 0.5;
+
+private:
+    std::vector<std::string>& calls_;
+};
+
+std::shared_ptr<Wall> ballWall(std::vector<std::string>& calls) {
+    auto wall = std::make_shared<Wall>("ball", std::make_shared<BallShape>(Eigen::Vector3d(5, 5, 5), 1.0, calls),
+                                       std::make_shared<DeferringRule>(calls));
+    wall->withForce(std::make_shared<PushForce>(calls));
+    return wall;
+}
 
 // One mobile particle in a 10^3 box, alone (no pair forces), dt 0.01.
 System lonelyParticle(const Eigen::Vector3d& r, const Eigen::Vector3d& v) {
@@ -75,20 +99,20 @@ System lonelyParticle(const Eigen::Vector3d& r, const Eigen::Vector3d& v) {
 
 }  // namespace
 
-TEST(WallList, ANewKindOfWallRunsLikeTheBuiltInOnes) {
+TEST(WallList, ANewShapeRuleAndForceRunLikeTheBuiltInOnes) {
     std::vector<std::string> calls;
     // The particle starts 0.005 in front of the ball and moves into it at speed 2 (0.02 in a step).
     System sys = lonelyParticle({5, 5, 6.005}, {0, 0, -2});
     PlanarWallSettings floor;  // a planar wall before it in the list, far from the particle
     floor.name = "floor";
     floor.point = Eigen::Vector3d(0, 0, 1);
-    floor.rule = ReflectionRule::bounceForward;
+    floor.rule = test::ruleNamed("bounceForward");
     sys.walls.addPlane(floor);
-    sys.walls.add(std::make_shared<BallWall>(Eigen::Vector3d(5, 5, 5), 1.0, calls));
+    sys.walls.add(ballWall(calls));
     sys.initialise();
     sys.sortByCell();
     sys.computeForces();
-    EXPECT_EQ(sys.particles.fx[0], BallWall::kPush) << "the wall's force is added to the pair forces (none here)";
+    EXPECT_EQ(sys.particles.fx[0], PushForce::kPush) << "the wall's force is added to the pair forces (none here)";
     EXPECT_TRUE(sys.hasVelocityDependentNonPairForces());
     EXPECT_TRUE(sys.isInsideSolid(5, 5, 5.5));
     EXPECT_FALSE(sys.isInsideSolid(5, 5, 6.5));
@@ -115,8 +139,8 @@ TEST(WallList, WallTypesAreChosenByName) {
     const DpdModel m = model("plane");
     ASSERT_EQ(m.walls.size(), 1u);
     EXPECT_EQ(m.walls[0].name(), "lower");
-    ASSERT_NE(m.walls[0].plane(), nullptr);
-    EXPECT_EQ(m.walls[0].plane()->point.z(), -3.0);
+    ASSERT_EQ(m.planes().size(), 1u);
+    EXPECT_EQ(m.planes()[0]->point.z(), -3.0);
     try {
         model("sphere");
         FAIL() << "an unknown wall type must be refused";
@@ -124,5 +148,56 @@ TEST(WallList, WallTypesAreChosenByName) {
         EXPECT_EQ(e.keyword(), "type");
         EXPECT_EQ(e.line(), 6);  // the line of lower's type
         EXPECT_NE(std::string(e.what()).find("expected plane"), std::string::npos) << e.what();
+    }
+}
+
+namespace {
+
+// A case with a geometry block (not built: reading the model does not open its file) and `rest`.
+DpdModel geometryCase(const std::string& rest) {
+    return readDpdModel(Dictionary::parse(
+        "kT 1;\nspecies { fluid { frozen no; } }\npairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n"
+        "geometry { type imageMask; file \"mask.png\"; pixelSize 0.5; solidValues (0); }\n" + rest,
+        "constant/dpdProperties"));
+}
+
+}  // namespace
+
+TEST(WallList, AGeometryWallIsAWallTypeAndTheOlderKeywordStillReads) {
+    // Named in the walls block, with any rule and its parameters.
+    const DpdModel named = geometryCase("walls { grains { type geometry; reflection bounceForward; } }\n");
+    ASSERT_EQ(named.walls.size(), 1u);
+    EXPECT_EQ(named.walls[0].name(), "grains");
+    EXPECT_EQ(named.walls[0].rule().description(), "bounceForward");
+    EXPECT_TRUE(named.planes().empty()) << "a geometry is not a plane for the channel fits";
+    EXPECT_TRUE(named.inputNotes.empty());
+    // A geometry block alone gets a bounce-back wall named geometry, without a note.
+    const DpdModel implicit = geometryCase("");
+    ASSERT_EQ(implicit.walls.size(), 1u);
+    EXPECT_EQ(implicit.walls[0].name(), "geometry");
+    EXPECT_EQ(implicit.walls[0].rule().description(), "bounceBack");
+    EXPECT_TRUE(implicit.inputNotes.empty());
+    // The older geometryWall block reads as that wall, with a note for the log.
+    const DpdModel older = geometryCase("geometryWall { reflection bounceLayer; alpha 0.1; }\n");
+    ASSERT_EQ(older.walls.size(), 1u);
+    EXPECT_EQ(older.walls[0].name(), "geometry");
+    EXPECT_EQ(older.walls[0].rule().description(), "bounceLayer (layer 0.1)");
+    ASSERT_EQ(older.inputNotes.size(), 1u);
+    EXPECT_NE(older.inputNotes[0].find("geometryWall"), std::string::npos) << older.inputNotes[0];
+    // Both at once, or a geometry wall without a geometry block, are refused by keyword.
+    try {
+        geometryCase("walls { grains { type geometry; } }\ngeometryWall { reflection specular; }\n");
+        FAIL() << "two geometry walls for one geometry must be refused";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.keyword(), "geometryWall");
+    }
+    try {
+        readDpdModel(Dictionary::parse("kT 1;\nspecies { fluid { frozen no; } }\npairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n"
+                                       "walls { grains { type geometry; } }\n",
+                                       "constant/dpdProperties"));
+        FAIL() << "a geometry wall without a geometry block must be refused";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.keyword(), "type");
+        EXPECT_NE(std::string(e.what()).find("geometry block"), std::string::npos) << e.what();
     }
 }

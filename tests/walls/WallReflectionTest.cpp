@@ -1,6 +1,7 @@
-// Planar walls (walls/PlanarWall.*, WallList.*): the reflection rules of docs/walls.md section 3.3 applied
+// Planar walls (walls/PlaneShape.*, Wall.*, WallList.*): the reflection rules of docs/walls.md section 3.3 applied
 // by a System during a step, the Maxwellian (diffuse) wall's velocity distribution, the reflection
 // counters; and the frozen lattices behind a wall (setup/FrozenLattice.*, section 3.1).
+#include "../support/WallRuleNamed.hpp"
 #include "integrators/EulerIntegrator.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "system/System.hpp"
@@ -19,13 +20,13 @@ using namespace dpd;
 
 namespace {
 
-PlanarWallSettings wall(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, ReflectionRule rule,
+PlanarWallSettings wall(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, const std::string& rule,
                 const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero()) {
     PlanarWallSettings w;
     w.name = "wall";
     w.point = point;
     w.normal = normal;
-    w.rule = rule;
+    w.rule = test::ruleNamed(rule);
     w.velocity = velocity;
     return w;
 }
@@ -75,7 +76,7 @@ TEST(WallReflection, BounceBackReversesTheVelocityRelativeToTheWall) {
     const Eigen::Vector3d uw(0.3, 0.2, 0.0);
     for (const std::string scheme : {"GrootWarren", "Euler"}) {
         SCOPED_TRACE(scheme);
-        System sys = lonely(3, {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::bounceBack, uw)}, {5, 5, 2.05},
+        System sys = lonely(3, {wall({0, 0, 2}, {0, 0, 1}, "bounceBack", uw)}, {5, 5, 2.05},
                             {1.0, -0.5, -10.0});
         IntegratorSettings s;
         s.type = scheme;
@@ -93,7 +94,7 @@ TEST(WallReflection, SpecularReversesTheNormalComponent) {
     // 0.02 behind; mirrored to z = 7.98. Normal component reversed: (2, 1, -5). The wall's tangential
     // velocity does not change a specular reflection (relative tangential part is kept, then added back).
     for (const Eigen::Vector3d uw : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.7, -0.4, 0)}) {
-        System sys = lonely(3, {wall({0, 0, 8}, {0, 0, -1}, ReflectionRule::specular, uw)}, {3, 4, 7.97}, {2, 1, 5});
+        System sys = lonely(3, {wall({0, 0, 8}, {0, 0, -1}, "specular", uw)}, {3, 4, 7.97}, {2, 1, 5});
         GrootWarrenIntegrator gw(0.65);
         const WallCounters c = gw.step(sys);
         expectVectorNear(position(sys), {3.02, 4.01, 7.98}, kTol, "position");
@@ -106,7 +107,7 @@ TEST(WallReflection, WallsAlongOtherAxesAnd2D) {
     // 2-D (x-z plane): wall x = 1.5 with normal +x, bounce-back, sliding along z at 0.6. From
     // (1.52, 0.5, 5) with v = (-4, 0, 1): drift to (1.48, 0.5, 5.01), mirrored to x = 1.52; relative
     // velocity (-4, 0, 0.4) reversed (4, 0, -0.4), plus (0, 0, 0.6): (4, 0, 0.2).
-    System sys2 = lonely(2, {wall({1.5, 0, 0}, {1, 0, 0}, ReflectionRule::bounceBack, {0, 0, 0.6})}, {1.52, 0.5, 5},
+    System sys2 = lonely(2, {wall({1.5, 0, 0}, {1, 0, 0}, "bounceBack", {0, 0, 0.6})}, {1.52, 0.5, 5},
                          {-4, 0, 1});
     GrootWarrenIntegrator gw(0.65);
     EXPECT_EQ(gw.step(sys2).returned[0], 1);
@@ -114,7 +115,7 @@ TEST(WallReflection, WallsAlongOtherAxesAnd2D) {
     expectVectorNear(velocity(sys2), {4.0, 0.0, 0.2}, kTol, "velocity");
     // 3-D wall y = 9 with normal -y, specular: from (5, 8.99, 5), v = (0, 3, -1): to (5, 9.02, 4.99),
     // mirrored to y = 8.98, velocity (0, -3, -1).
-    System sys3 = lonely(3, {wall({0, 9, 0}, {0, -1, 0}, ReflectionRule::specular)}, {5, 8.99, 5}, {0, 3, -1});
+    System sys3 = lonely(3, {wall({0, 9, 0}, {0, -1, 0}, "specular")}, {5, 8.99, 5}, {0, 3, -1});
     EXPECT_EQ(gw.step(sys3).returned[0], 1);
     expectVectorNear(position(sys3), {5, 8.98, 4.99}, kTol, "position");
     expectVectorNear(velocity(sys3), {0, -3, -1}, kTol, "velocity");
@@ -122,8 +123,8 @@ TEST(WallReflection, WallsAlongOtherAxesAnd2D) {
 
 TEST(WallReflection, CountersCountOnlyCrossings) {
     // Two walls; the particle crosses only the second. Then a particle that stays in the fluid.
-    const std::vector<PlanarWallSettings> walls = {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::bounceBack),
-                                           wall({0, 0, 8}, {0, 0, -1}, ReflectionRule::bounceBack)};
+    const std::vector<PlanarWallSettings> walls = {wall({0, 0, 2}, {0, 0, 1}, "bounceBack"),
+                                           wall({0, 0, 8}, {0, 0, -1}, "bounceBack")};
     GrootWarrenIntegrator gw(0.65);
     System crossing = lonely(3, walls, {5, 5, 7.99}, {0, 0, 3});
     WallCounters c = gw.step(crossing);
@@ -137,7 +138,7 @@ TEST(WallReflection, CountersCountOnlyCrossings) {
     EXPECT_EQ(c.returned[1], 0);
     expectVectorNear(velocity(staying), {1, 2, -3}, 0.0, "untouched velocity");
     // With the rule "none" nothing is reflected and the particle is reported inside the solid.
-    System none = lonely(3, {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::none)}, {5, 5, 2.01}, {0, 0, -3});
+    System none = lonely(3, {wall({0, 0, 2}, {0, 0, 1}, "none")}, {5, 5, 2.01}, {0, 0, -3});
     c = gw.step(none);
     EXPECT_EQ(c.returned[0], 0);
     EXPECT_EQ(c.insideAfter, 1);
@@ -151,8 +152,8 @@ TEST(WallReflection, CountersCountOnlyCrossings) {
 // itself to docs/walls.md 3.3: at z = 0.02 moving at -4 the particle ends at -0.02, is mirrored to 0.02
 // and bounced back to v_z = +4.
 TEST(WallReflection, WallOnTheBoxFaceStillReflects) {
-    const std::vector<PlanarWallSettings> walls = {wall({0, 0, 0}, {0, 0, 1}, ReflectionRule::bounceBack),
-                                           wall({0, 0, 10}, {0, 0, -1}, ReflectionRule::bounceBack)};
+    const std::vector<PlanarWallSettings> walls = {wall({0, 0, 0}, {0, 0, 1}, "bounceBack"),
+                                           wall({0, 0, 10}, {0, 0, -1}, "bounceBack")};
     GrootWarrenIntegrator gw(0.65);
     System down = lonely(3, walls, {5, 5, 0.02}, {0, 0, -4});
     const WallCounters c = gw.step(down);
@@ -169,7 +170,7 @@ TEST(WallReflection, MaxwellianSingleParticle) {
     // Diffuse wall z = 2 (normal +z) at rest: the position is mirrored as for the other rules, the new
     // velocity leaves the wall (v_z > 0). In 2-D the inactive y component stays zero.
     for (int dimension : {3, 2}) {
-        System sys = lonely(dimension, {wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::maxwellian)},
+        System sys = lonely(dimension, {wall({0, 0, 2}, {0, 0, 1}, "maxwellian")},
                             {5, dimension == 3 ? 5.0 : 0.5, 2.05}, {1.0, 0.0, -10.0});
         GrootWarrenIntegrator gw(0.65);
         EXPECT_EQ(gw.step(sys).returned[0], 1);
@@ -199,7 +200,7 @@ TEST(WallReflection, MaxwellianDistributionIsFluxWeightedAtTheWallTemperature) {
     sys.pairs.set(0, 0, {0.0, 0.0, 0.0, false});  // ideal gas: only the wall acts
     sys.forceParameters = {1.0, 2.0, kT, 0.01};
     sys.seed = 99;
-    sys.walls.addPlane(wall({0, 0, 2}, {0, 0, 1}, ReflectionRule::maxwellian, uw));
+    sys.walls.addPlane(wall({0, 0, 2}, {0, 0, 1}, "maxwellian", uw));
     const PairRandom placement(5);
     const int m = 40000;
     for (int k = 0; k < m; ++k) {
@@ -283,7 +284,7 @@ TEST(FrozenLattice, FccNumberDensityBehindTheWall) {
         // Commensurate box 6 x 5: 2 planes (0.25, 0.75) x 2 x 6 x 5 = 120 points in 6 x 5 x 1: exactly
         // 4 per unit area per unit depth.
         const Box box = box3(6.0, 5.0, 12.0);
-        const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+        const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, "bounceBack");
         const auto pts = frozenLattice(box, w, s);
         EXPECT_EQ(pts.size(), 120u);
         EXPECT_DOUBLE_EQ(pts.size() / (6.0 * 5.0 * s.thickness), 4.0);
@@ -308,7 +309,7 @@ TEST(FrozenLattice, FccNumberDensityBehindTheWall) {
         // density by 1/1.05, and 1.3 holds 1.5 plane spacings' worth of planes.
         const Box box = box3(6.3, 5.0, 12.0);
         s.thickness = 1.3;
-        const PlanarWallSettings w = wall({0, 0, 9}, {0, 0, -1}, ReflectionRule::bounceBack);
+        const PlanarWallSettings w = wall({0, 0, 9}, {0, 0, -1}, "bounceBack");
         const auto pts = frozenLattice(box, w, s);
         EXPECT_EQ(pts.size(), 180u);
         for (const auto& r : pts) {
@@ -328,7 +329,7 @@ TEST(FrozenLattice, FccNumberDensityBehindTheWall) {
         Box box = box3(10.0, 1.0, 10.0);
         box.dimension = 2;
         s.thickness = 1.0;
-        const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+        const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, "bounceBack");
         const auto pts = frozenLattice(box, w, s);
         EXPECT_EQ(pts.size(), 3u * 14u);
         for (const auto& r : pts) {
@@ -347,7 +348,7 @@ TEST(FrozenLattice, LayersAtTheGivenDepthsAndSpacing) {
     s.layerDepths = {0.15, 0.35, 0.75};
     s.layerSpacing = {0.5, 1.0};
     const Box box = box3(6.0, 5.0, 12.0);
-    const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+    const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, "bounceBack");
     const auto pts = frozenLattice(box, w, s);
     ASSERT_EQ(pts.size(), 180u);
     std::map<double, int> perDepth;
@@ -371,7 +372,7 @@ TEST(FrozenLattice, LayersAtTheGivenDepthsAndSpacing) {
     for (std::size_t k = 1; k < xv.size(); ++k) EXPECT_NEAR(xv[k] - xv[k - 1], 0.5, 1e-12);
     for (std::size_t k = 1; k < yv.size(); ++k) EXPECT_NEAR(yv[k] - yv[k - 1], 1.0, 1e-12);
     // An upper wall gets the same depths on the other side.
-    const PlanarWallSettings up = wall({0, 0, 9}, {0, 0, -1}, ReflectionRule::bounceBack);
+    const PlanarWallSettings up = wall({0, 0, 9}, {0, 0, -1}, "bounceBack");
     std::set<long> upDepths;
     for (const auto& r : frozenLattice(box, up, s)) upDepths.insert(std::lround((r.z() - 9.0) * 100));
     EXPECT_EQ(upDepths, (std::set<long>{15, 35, 75}));
@@ -386,7 +387,7 @@ TEST(FrozenLattice, StaggeredLayersSitInTheHollowsOfTheLayerInFront) {
     s.layerDepths = {0.0, 0.5};
     s.layerSpacing = {0.5, 1.0};
     const Box box = box3(6.0, 5.0, 12.0);
-    const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack);
+    const PlanarWallSettings w = wall({0, 0, 3}, {0, 0, 1}, "bounceBack");
     const auto inRegister = frozenLattice(box, w, s);
     s.staggered = true;
     const auto staggered = frozenLattice(box, w, s);
@@ -416,14 +417,14 @@ TEST(FrozenLattice, RejectsImpossibleSettings) {
     s.lattice = "layers";
     s.layerDepths = {0.15};
     s.layerSpacing = {0.5};  // a 3-D wall needs two spacings
-    EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack), s), std::invalid_argument);
+    EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, "bounceBack"), s), std::invalid_argument);
     s.lattice = "fcc";
-    PlanarWallSettings oblique = wall({0, 0, 3}, Eigen::Vector3d(1, 0, 1).normalized(), ReflectionRule::bounceBack);
+    PlanarWallSettings oblique = wall({0, 0, 3}, Eigen::Vector3d(1, 0, 1).normalized(), "bounceBack");
     EXPECT_THROW(frozenLattice(box, oblique, s), std::invalid_argument);
     s.lattice = "hexagonal";
-    EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack), s), std::invalid_argument);
+    EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, "bounceBack"), s), std::invalid_argument);
     s.lattice = "layers";
     s.layerSpacing = {0.5, 1.0};
     s.layerDepths = {-0.1};  // in front of the wall, in the fluid
-    EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, ReflectionRule::bounceBack), s), std::invalid_argument);
+    EXPECT_THROW(frozenLattice(box, wall({0, 0, 3}, {0, 0, 1}, "bounceBack"), s), std::invalid_argument);
 }

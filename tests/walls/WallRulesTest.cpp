@@ -2,6 +2,7 @@
 // carrying their frozen particles, and each rule's signature on a gas or a DPD fluid: specular walls
 // slip, bounce-back walls drag the fluid, Maxwellian walls hold the wall temperature, a bounce layer
 // far too thin lets particles through and the crossings are counted.
+#include "../support/WallRuleNamed.hpp"
 #include "forces/UniformBodyForce.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
 #include "setup/InitialConditions.hpp"
@@ -18,15 +19,14 @@ using namespace dpd;
 
 namespace {
 
-PlanarWallSettings makeWall(const std::string& name, double z, double normalZ, ReflectionRule rule,
+PlanarWallSettings makeWall(const std::string& name, double z, double normalZ, const std::string& rule,
                     const Eigen::Vector3d& velocity = Eigen::Vector3d::Zero(), double layer = 0.0) {
     PlanarWallSettings w;
     w.name = name;
     w.point = Eigen::Vector3d(0, 0, z);
     w.normal = Eigen::Vector3d(0, 0, normalZ);
-    w.rule = rule;
+    w.rule = test::ruleNamed(rule, layer);
     w.velocity = velocity;
-    w.layer = layer;
     return w;
 }
 
@@ -71,20 +71,20 @@ void expectNear(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const char* 
 TEST(WallRules, BounceForwardReversesTheVelocityAfterTheStep) {
     const Eigen::Vector3d uw(0.3, 0.2, 0.0), g(0.5, 0.0, -3.0);
     GrootWarrenIntegrator gw(0.65);
-    System forward = lonely(makeWall("w", 2, 1, ReflectionRule::bounceForward, uw), {5, 5, 2.05}, {1, 0, -10}, 0.01, g);
+    System forward = lonely(makeWall("w", 2, 1, "bounceForward", uw), {5, 5, 2.05}, {1, 0, -10}, 0.01, g);
     const WallCounters c = gw.step(forward);
     expectNear(pos(forward), {5.010025, 5.0, 2.05015}, "bounceForward position");
     expectNear(vel(forward), {-0.405, 0.4, 10.03}, "bounceForward velocity");
     EXPECT_EQ(c.returned[0], 1);
     EXPECT_EQ(c.crossed[0], 1);
     EXPECT_EQ(c.insideAfter, 0);  // deferred, not left inside
-    System back = lonely(makeWall("w", 2, 1, ReflectionRule::bounceBack, uw), {5, 5, 2.05}, {1, 0, -10}, 0.01, g);
+    System back = lonely(makeWall("w", 2, 1, "bounceBack", uw), {5, 5, 2.05}, {1, 0, -10}, 0.01, g);
     gw.step(back);
     expectNear(pos(back), {5.010025, 5.0, 2.05015}, "bounceBack position");
     expectNear(vel(back), {-0.4, 0.4, 10.0}, "bounceBack velocity");
     // reverseFrame lab: the same step, the velocity reversed itself, -(v + dt g) = (-1.005, 0, 10.03).
-    PlanarWallSettings lab = makeWall("w", 2, 1, ReflectionRule::bounceForward, uw);
-    lab.reverseInLabFrame = true;
+    PlanarWallSettings lab = makeWall("w", 2, 1, "bounceForward", uw);
+    lab.rule = test::ruleNamed("bounceForward", 0.0, true);
     System labFrame = lonely(lab, {5, 5, 2.05}, {1, 0, -10}, 0.01, g);
     gw.step(labFrame);
     expectNear(pos(labFrame), {5.010025, 5.0, 2.05015}, "bounceForward (lab frame) position");
@@ -94,7 +94,7 @@ TEST(WallRules, BounceForwardReversesTheVelocityAfterTheStep) {
 // Bounce layer 0.1 thick in front of z = 2 (wall at rest), dt = 0.001 so a particle moves 0.002 at most.
 TEST(WallRules, BounceLayerTurnsApproachingParticlesRound) {
     GrootWarrenIntegrator gw(0.65);
-    const PlanarWallSettings w = makeWall("w", 2, 1, ReflectionRule::bounceLayer, Eigen::Vector3d::Zero(), 0.1);
+    const PlanarWallSettings w = makeWall("w", 2, 1, "bounceLayer", Eigen::Vector3d::Zero(), 0.1);
     // In the layer, approaching: tangential velocity reversed, normal drawn from the wall (> 0), no mirror.
     System in = lonely(w, {5, 5, 2.03}, {1, 0.5, -2}, 0.001);
     WallCounters c = gw.step(in);
@@ -114,7 +114,7 @@ TEST(WallRules, BounceLayerTurnsApproachingParticlesRound) {
     expectNear(vel(outside), {1, 0.5, -2}, "outside");
     // A layer far too thin (1e-4) for a step of 0.1: the particle crosses the plane, is mirrored back,
     // turned round, and the crossing is counted.
-    const PlanarWallSettings thin = makeWall("w", 2, 1, ReflectionRule::bounceLayer, Eigen::Vector3d::Zero(), 1e-4);
+    const PlanarWallSettings thin = makeWall("w", 2, 1, "bounceLayer", Eigen::Vector3d::Zero(), 1e-4);
     System through = lonely(thin, {5, 5, 2.05}, {0, 0, -10}, 0.01);
     c = gw.step(through);
     EXPECT_NEAR(pos(through).z(), 2.05, kTol);
@@ -130,7 +130,7 @@ namespace {
 // particles with Maxwellian velocities at kTGas; the walls' temperature is kTWall.
 constexpr int kGasParticles = 600;
 
-System gas(ReflectionRule rule, double layer, double kTGas, double kTWall, double dt) {
+System gas(const std::string& rule, double layer, double kTGas, double kTWall, double dt) {
     System sys;
     sys.box.hi = Eigen::Vector3d(4, 4, 6);
     sys.species.add({"gas", false});
@@ -177,7 +177,7 @@ WallCounters run(System& sys, int steps) {
 // error kT sqrt(2 / (3N)) = 0.033; the mean of 5 snapshots has at most that: accept within 4 of it.
 // (No pair forces: the drift is exact, so a large step dt = 0.05 is fine.)
 TEST(WallRules, MaxwellianWallsHoldTheWallTemperature) {
-    System maxwell = gas(ReflectionRule::maxwellian, 0.0, 2.0, 1.0, 0.05);
+    System maxwell = gas("maxwellian", 0.0, 2.0, 1.0, 0.05);
     run(maxwell, 800);
     double kT = 0.0;
     for (int k = 0; k < 5; ++k) {
@@ -186,7 +186,7 @@ TEST(WallRules, MaxwellianWallsHoldTheWallTemperature) {
     }
     std::printf("    Maxwellian walls at kT = 1, gas started at 2: kT = %.4f\n", kT);
     EXPECT_NEAR(kT, 1.0, 4.0 * std::sqrt(2.0 / (3.0 * kGasParticles)));
-    System bounce = gas(ReflectionRule::bounceBack, 0.0, 2.0, 1.0, 0.05);
+    System bounce = gas("bounceBack", 0.0, 2.0, 1.0, 0.05);
     const double before = kineticTemperature(bounce);
     run(bounce, 800);
     EXPECT_NEAR(kineticTemperature(bounce), before, 1e-9 * before) << "bounce-back conserves the gas's energy";
@@ -198,7 +198,7 @@ TEST(WallRules, MaxwellianWallsHoldTheWallTemperature) {
 // dt = 0.01: crossing it needs |v_z| > 10, a chance of about exp(-50 / kT) per particle: none. A
 // layer of 1e-4: most particles reaching the wall jump it (v_z dt ~ 0.01), and each is counted.
 TEST(WallRules, BounceLayerThermalisesTheNormalVelocityAndCountsItsFailures) {
-    System good = gas(ReflectionRule::bounceLayer, 0.1, 2.0, 1.0, 0.01);
+    System good = gas("bounceLayer", 0.1, 2.0, 1.0, 0.01);
     const WallCounters c = run(good, 2500);
     double kz = 0.0, kx = 0.0;
     for (int k = 0; k < 5; ++k) {
@@ -214,7 +214,7 @@ TEST(WallRules, BounceLayerThermalisesTheNormalVelocityAndCountsItsFailures) {
     EXPECT_EQ(c.crossed[0] + c.crossed[1], 0);
     EXPECT_EQ(c.insideAfter, 0);
 
-    System thin = gas(ReflectionRule::bounceLayer, 1e-4, 1.0, 1.0, 0.01);
+    System thin = gas("bounceLayer", 1e-4, 1.0, 1.0, 0.01);
     const WallCounters t = run(thin, 500);
     std::printf("    bounce layer 1e-4: returned %ld, crossed %ld\n", t.returned[0] + t.returned[1],
                 t.crossed[0] + t.crossed[1]);
@@ -226,7 +226,7 @@ namespace {
 
 // Couette between reflecting walls at z = 1 and 7 (no frozen particles) sliding at -U and +U; a DPD
 // fluid rho = 3, a = 25, gamma = 4.5, 5 x 5 between the walls, dt = 0.02.
-System couette(ReflectionRule rule, double U) {
+System couette(const std::string& rule, double U) {
     System sys;
     sys.box.hi = Eigen::Vector3d(5, 5, 8);
     sys.species.add({"fluid", false});
@@ -271,13 +271,13 @@ double nearUpperWallVelocity(System& sys, int steps) {
 // accepting > 0.5 U tells a no-slip wall from a slipping one (specular: 0).
 TEST(WallRules, SpecularWallsSlipBounceBackWallsDrag) {
     const double U = 1.0;
-    System specular = couette(ReflectionRule::specular, U);
+    System specular = couette("specular", U);
     const double uSpecular = nearUpperWallVelocity(specular, 1000);
     double px = 0.0;
     for (double v : specular.particles.vx) px += v;
     std::printf("    specular: fluid x momentum %.3g, near-wall velocity %.4f\n", px, uSpecular);
     EXPECT_NEAR(px, 0.0, 1e-9 * specular.particles.size());
-    System bounce = couette(ReflectionRule::bounceBack, U);
+    System bounce = couette("bounceBack", U);
     nearUpperWallVelocity(bounce, 2000);
     const double uBounce = nearUpperWallVelocity(bounce, 2000);
     std::printf("    bounce-back: near-wall velocity %.4f (wall %.1f)\n", uBounce, U);
@@ -297,8 +297,9 @@ TEST(WallRules, MovingWallsCarryTheirFrozenParticlesAndWrap) {
     sys.pairs.set(0, 1, {25.0, 4.5, 0.0, true});
     sys.forceParameters = {1.0, 2.0, 1.0, 0.02};
     const Eigen::Vector3d uLow(-3, 0, 0), uHigh(3, 0.5, 0);
-    sys.walls.addPlane(makeWall("lower", 1.5, 1, ReflectionRule::bounceForward, uLow));
-    sys.walls.addPlane(makeWall("upper", 6.5, -1, ReflectionRule::bounceForward, uHigh));
+    const PlanarWallSettings planes[2] = {makeWall("lower", 1.5, 1, "bounceForward", uLow),
+                                          makeWall("upper", 6.5, -1, "bounceForward", uHigh)};
+    for (const PlanarWallSettings& w : planes) sys.walls.addPlane(w);
     const PairRandom random(3);
     fillRandom(sys.particles, sys.box, Eigen::Vector3d(0, 0, 1.5), Eigen::Vector3d(4, 4, 6.5), 3.0, 0,
                [](double, double, double) { return true; }, random, 0);
@@ -307,8 +308,8 @@ TEST(WallRules, MovingWallsCarryTheirFrozenParticlesAndWrap) {
     lattice.density = 3.0;
     std::uint64_t id = 100000;
     std::map<std::uint64_t, Eigen::Vector3d> start;
-    for (const PlanarWallSettings* w : sys.walls.planes())
-        for (const Eigen::Vector3d& r : frozenLattice(sys.box, *w, lattice)) {
+    for (const PlanarWallSettings& w : planes)
+        for (const Eigen::Vector3d& r : frozenLattice(sys.box, w, lattice)) {
             sys.particles.add(id, 1, r.x(), r.y(), r.z());  // at rest: the system gives them the wall's velocity
             start[id++] = r;
         }

@@ -1,0 +1,129 @@
+#include "walls/GeometryShape.hpp"
+
+#include "geometry/GeometryDictionary.hpp"
+#include "io/Dictionary.hpp"
+#include "random/PairRandom.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace dpd {
+
+namespace {
+
+// The shortest periodic image of a displacement.
+Eigen::Vector3d minimumImage(Eigen::Vector3d d, const Box& box) {
+    const Eigen::Vector3d l = box.length();
+    for (int a = 0; a < 3; ++a)
+        if (box.isActiveAxis(a)) d[a] -= l[a] * std::round(d[a] / l[a]);
+    return d;
+}
+
+// Half the smallest grid cell along an axis the field varies along.
+double probeSpacingOf(const BackgroundGrid& g) {
+    double spacing = 0.0;
+    for (int a = 0; a < 3; ++a)
+        if (g.n[a] > 1 && (spacing == 0.0 || 0.5 * g.spacing[a] < spacing)) spacing = 0.5 * g.spacing[a];
+    return spacing == 0.0 ? 0.5 * g.spacing.minCoeff() : spacing;
+}
+
+}  // namespace
+
+GeometryShape::GeometryShape(SignedDistanceField field)
+    : field_(std::move(field)), probeSpacing_(probeSpacingOf(field_->grid())) {}
+
+GeometryShape::GeometryShape(std::shared_ptr<const Dictionary> geometryDict) : geometryDict_(std::move(geometryDict)) {}
+
+const SignedDistanceField& GeometryShape::field() const {
+    if (!field_) throw std::logic_error("a geometry wall was used before it was built on the run's box");
+    return *field_;
+}
+
+std::shared_ptr<WallShape> GeometryShape::builtOn(const ShapeBuildContext& c) const {
+    if (field_) return nullptr;
+    return std::make_shared<GeometryShape>(readSolidRegion(*geometryDict_, c.caseDir, c.box, c.cutoff).distance);
+}
+
+std::string GeometryShape::description() const {
+    if (!field_) return "distance field of the geometry block";
+    const BackgroundGrid& g = field_->grid();
+    std::ostringstream os;
+    os << "distance field " << g.n[0] << " x " << g.n[1] << " x " << g.n[2] << " cells";
+    return os.str();
+}
+
+void GeometryShape::markFlowAxes(const Box& box, std::array<bool, 3>& varies) const {
+    for (int k = 0; k < 3; ++k)
+        if (field().grid().n[k] > 1 && box.isActiveAxis(k)) varies[k] = true;
+}
+
+std::uint32_t GeometryShape::reflectionStream() const { return kStreamGeometryWall; }
+
+void GeometryShape::recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozen) {
+    std::uint64_t maxId = 0;
+    for (const std::uint64_t id : p.id) maxId = std::max(maxId, id);
+    if (previous_.size() < 3 * (maxId + 1)) previous_.resize(3 * (maxId + 1), 0.0);
+    const long n = static_cast<long>(p.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+        if (frozen[p.species[i]]) continue;
+        double* r = &previous_[3 * p.id[i]];
+        r[0] = p.rx[i];
+        r[1] = p.ry[i];
+        r[2] = p.rz[i];
+    }
+}
+
+GeometryShape::Entry GeometryShape::findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta,
+                                              SurfaceDistance& atEnd) const {
+    // Probes at equal fractions of the path, the last one at its end; a step shorter than the probe
+    // spacing (the usual case) costs one lookup.
+    const SignedDistanceField& f = field();
+    const int probes = std::max(1, static_cast<int>(std::ceil(delta.norm() / probeSpacing_)));
+    Entry entry;
+    entry.fluidPoint = from;
+    for (int k = 1; k <= probes; ++k) {
+        const Eigen::Vector3d r = from + (static_cast<double>(k) / probes) * delta;
+        const SurfaceDistance s = f.at(r);
+        if (k == probes) atEnd = s;
+        if (s.distance < 0.0) {
+            entry.found = true;
+            if (k == 1) entry.atFluidPoint = f.at(from);
+            return entry;
+        }
+        entry.fluidPoint = r;
+        entry.atFluidPoint = s;
+    }
+    return entry;
+}
+
+Eigen::Vector3d GeometryShape::returnPoint(const Entry& entry, const Eigen::Vector3d& end, const Box& box) const {
+    // The tangent plane of the surface where the path entered, seen from the fluid it came from.
+    const Eigen::Vector3d n = entry.atFluidPoint.normal;
+    const Eigen::Vector3d surfacePoint = entry.fluidPoint - entry.atFluidPoint.distance * n;
+    const double depth = std::min(0.0, (end - surfacePoint).dot(n));
+    const Eigen::Vector3d back = end - 2.0 * depth * n;
+    // A concave corner (or a normal the field could not give) can leave the mirror image in the
+    // solid or behind another part of it: the last point of the path still in the fluid is safe.
+    // (A particle that started the step inside, which only a failure leaves, is just mirrored.)
+    const bool cameFromFluid = entry.atFluidPoint.distance >= 0.0;
+    SurfaceDistance unused;
+    if (cameFromFluid && (n.squaredNorm() == 0.0 ||
+                          findEntry(entry.fluidPoint, minimumImage(back - entry.fluidPoint, box), unused).found))
+        return entry.fluidPoint;
+    return back;
+}
+
+ShapeCrossing GeometryShape::crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const {
+    const Eigen::Vector3d end(p.rx[i], p.ry[i], p.rz[i]);
+    const std::uint64_t id = p.id[i];
+    const bool known = 3 * id + 2 < previous_.size();
+    const Eigen::Vector3d start = known ? Eigen::Vector3d(previous_[3 * id], previous_[3 * id + 1], previous_[3 * id + 2]) : end;
+    const Entry entry = findEntry(start, minimumImage(end - start, box), atEnd);
+    if (!entry.found) return {};
+    return {true, returnPoint(entry, end, box), entry.atFluidPoint.normal};
+}
+
+}  // namespace dpd

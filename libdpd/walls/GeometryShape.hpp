@@ -1,0 +1,59 @@
+#pragma once
+// A solid of any shape (the `geometry` wall type; docs/walls.md 3.2 steps 5-6): the case's geometry
+// block seen through its signed distance field (distance > 0 in the fluid, normal into the fluid),
+// built on the run's box. A particle whose path entered the solid goes back to its mirror image across
+// the surface where it entered.
+//
+// The path of each step (from where the particle stood at the start of the step to where it ends)
+// is probed at intervals of half a grid cell, so a solid feature the field resolves (at least two
+// grid cells thick, e.g. one pixel with gridSpacing half the pixel size) stops a particle even when
+// the particle would have stepped right over it. The mirror plane is the surface's tangent plane on
+// the side the particle came from, so a particle past the middle of a thin feature still goes back
+// the way it came instead of out through the far side.
+#include "geometry/SignedDistanceField.hpp"
+#include "walls/WallShape.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace dpd {
+
+class Dictionary;
+
+class GeometryShape : public WallShape {
+public:
+    // The solid of this field.
+    explicit GeometryShape(SignedDistanceField field);
+    // The solid of a geometry block, to be built on the run's box (builtOn).
+    explicit GeometryShape(std::shared_ptr<const Dictionary> geometryDict);
+
+    const SignedDistanceField& field() const;
+    std::string description() const override;
+    double signedDistance(const Eigen::Vector3d& r) const override { return field().distance(r); }
+    SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return field().at(r); }
+    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const override;
+    // Remembers where every mobile particle stands (by id): the start of the next step's path.
+    void recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies) override;
+    // The flow may vary along every active axis the field resolves.
+    void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;
+    std::uint32_t reflectionStream() const override;
+    std::shared_ptr<WallShape> builtOn(const ShapeBuildContext& c) const override;
+
+private:
+    struct Entry {
+        bool found = false;
+        Eigen::Vector3d fluidPoint{0, 0, 0};  // last probe on the path still in the fluid
+        SurfaceDistance atFluidPoint;
+    };
+    // Where the path from `from` by `delta` first enters the solid, if it does.
+    Entry findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta, SurfaceDistance& atEnd) const;
+    // Where a particle whose path entered the solid at `entry` and ended at `end` goes back.
+    Eigen::Vector3d returnPoint(const Entry& entry, const Eigen::Vector3d& end, const Box& box) const;
+
+    std::shared_ptr<const Dictionary> geometryDict_;  // set while not built on a box
+    std::optional<SignedDistanceField> field_;
+    double probeSpacing_ = 0.0;     // half the smallest varying grid cell
+    std::vector<double> previous_;  // 3 per particle id: the start of the current step
+};
+
+}  // namespace dpd
