@@ -1,5 +1,5 @@
 #!/bin/bash
-# The heat of a flowing fluid apart from the motion neighbours share (etc/pairTemperature.py), on
+# The heat of a flowing fluid apart from the motion neighbours share (etc/python/dpdfoam/pair_temperature.py), on
 # synthetic snapshots whose answer is known: particles at random positions (density 4, periodic box
 # 20 x 10 x 10) with velocities drawn at kT 1.3 about a mean shear u_x = 0.5 z, frozen particles at rest
 # beside them (to be left out).
@@ -19,12 +19,11 @@ requirePython "$python" numpy h5py scipy || finishTests pairTemperature
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-out=$(DPD_ETC="$src/etc" WORK="$work" "$python" - 2>&1 <<'EOF'
-import os, sys
-sys.path.insert(0, os.environ["DPD_ETC"])
+out=$(PYTHONPATH="$src/etc/python" WORK="$work" "$python" - 2>&1 <<'EOF'
+import os
 import h5py
 import numpy as np
-from pairTemperature import pair_temperature
+from dpdfoam.pair_temperature import pair_temperature
 
 KT, SHEAR, A, SNAPSHOTS = 1.3, 0.5, 0.6, 8
 lo, hi = np.array([-10.0, -5.0, -5.0]), np.array([10.0, 5.0, 5.0])

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The published comparison of the slip tutorials (etc/dpdResults.py, published_checks): a point within
+# The published comparison of the slip tutorials (etc/python/dpdfoam/published.py, published_checks): a point within
 # max(0.3 r_c, 30 %) of the paper passes, once decided; a point outside passes only where the named
 # variant that measures the accounting ingredient lies within the tolerance at the same point, and
 # fails when that variant is outside, undecided or has not run. Numbers: the couetteSlip tutorial's
@@ -12,11 +12,9 @@ python=/usr/bin/python3
 # A required dependency: missing, it fails the test (no skip).
 requirePython "$python" numpy || finishTests publishedComparison
 
-out=$(DPD_RESULTS="$src/etc" "$python" - 2>&1 <<'EOF'
-import os, sys
-sys.path.insert(0, os.environ["DPD_RESULTS"])
+out=$(PYTHONPATH="$src/etc/python" "$python" - 2>&1 <<'EOF'
 import numpy as np
-from dpdResults import compare_with_published, published_checks
+from dpdfoam.published import compare_with_published, published_checks
 
 table = {"a_ww": np.array([10.0, 15.0]), "slipLength": np.array([0.4912, 1.0751])}
 published = compare_with_published(table, "a_ww", np.array([10.0, 15.0]), np.array([0.714, 1.543]),

@@ -25,13 +25,13 @@ other jobs on the machine (CPU time still grows when they contend for caches and
 nothing. The per-run costs stay in the table; results.dat gives the medians and their spread.
 """
 import math
+import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from dpdfoam.checks import Checks
+from dpdfoam.plots import label as label_axes, plt, save
 
 TABLE = "postProcessing/integratorSpeedAccuracy/speedAccuracy.dat"
 BASELINE = ("GrootWarren0.65", 0.02)  # the method and step the speed-up is measured against
@@ -166,11 +166,10 @@ def plot(rows, reference):
         ax.set_yscale("log")
         ax.axhline(1, color="tab:green", lw=0.8, ls="--")
         ax.axhline(5, color="tab:orange", lw=0.8, ls="--")
-        ax.set_xlabel("cost: CPU seconds per particle per time unit (median step cost / dt)")
-        ax.set_ylabel("|%s error| (%%)  (labels: dt)" % name)
+        label_axes(ax, None, "cost: CPU seconds per particle per time unit (median step cost / dt)",
+              "|%s error| (%%)  (labels: dt)" % name, legend=7)
         against = "set kT" if q == "kT" else reference_name(reference)
         ax.set_title("%s error against cost (against %s)" % (name, against), fontsize=10)
-        ax.legend(fontsize=7)
     ax2 = axes.flat[3]
     for k, (label, points) in enumerate(rows.items()):
         stable_dt = [p["dt"] for p in points if not p["unstable"]]
@@ -186,8 +185,7 @@ def plot(rows, reference):
     ax2.set_yticklabels(list(rows.keys()))
     ax2.set_xlabel("dt")
     ax2.set_title("stability map: | measured, o kT error 1 % (green) and 5 % (orange), x blow-up", fontsize=9)
-    fig.tight_layout()
-    fig.savefig("speedAccuracy.png", dpi=120)
+    save(fig, "speedAccuracy.png", dpi=120)
 
 
 def fmt(x):
@@ -257,29 +255,25 @@ def checks(rows, reference, test_mode):
     """Every Verlet-type scheme at its smallest studied step (at most 0.02): each standard error within
     its budget, then kT within 5 % of the set kT, pressure within 5 % and viscosity within 10 % of the
     reference run, each bound widened by a fixed 4 budgets; the largest step stops every scheme when it
-    is 0.15 or more (measured blow-up 0.12-0.13)."""
-    failures = []
+    is 0.15 or more (measured blow-up 0.12-0.13). Each check is named by what its failure means; a NaN
+    fails it (dpdfoam.checks)."""
+    out = Checks()
     budgets = BUDGETS[test_mode]
-    if not reference or not (reference[2] == reference[2]):
-        failures.append("no reference run in the table")
+    out.add("no reference run in the table", reference is not None, "", *(reference[2:3] if reference else ()))
     for label, points in rows.items():
         first, last = points[0], points[-1]
         if label != "Euler" and first["dt"] <= 0.02:
-            if first["unstable"]:
-                failures.append("%s: unstable at dt %g" % (label, first["dt"]))
-            else:
-                # Every quantity is measured at these steps: a missing (NaN) one fails below.
-                for q in ("kT", "P", "nu"):
-                    se, bound = first[q + "se"], LEVELS[q] + 4 * budgets[q]
-                    if not (se <= budgets[q]):
-                        failures.append("%s: %s standard error %.3g over its budget %.3g at dt %g"
-                                        % (label, q, se, budgets[q], first["dt"]))
-                    elif not (abs(first[q]) <= bound):
-                        failures.append("%s: %s error %.3g +- %.3g beyond %.3g at dt %g"
-                                        % (label, q, first[q], se, bound, first["dt"]))
-        if last["dt"] >= 0.15 and not last["unstable"]:
-            failures.append("%s: not stopped at dt %g" % (label, last["dt"]))
-    return failures
+            if not out.add("%s: unstable at dt %g" % (label, first["dt"]), not first["unstable"]):
+                continue
+            # Every quantity is measured at these steps: a missing (NaN) one fails below.
+            for q in ("kT", "P", "nu"):
+                se, bound = first[q + "se"], LEVELS[q] + 4 * budgets[q]
+                if out.add("%s: %s standard error %.3g over its budget %.3g at dt %g" % (label, q, se, budgets[q], first["dt"]),
+                           se <= budgets[q]):
+                    out.add("%s: %s error %.3g +- %.3g beyond %.3g at dt %g" % (label, q, first[q], se, bound, first["dt"]),
+                            abs(first[q]) <= bound)
+        out.add("%s: not stopped at dt %g" % (label, last["dt"]), not (last["dt"] >= 0.15 and not last["unstable"]))
+    return out
 
 
 def main():
@@ -291,13 +285,11 @@ def main():
     text = "\n".join(lines) + "\n"
     with open("results.dat.tmp", "w") as f:
         f.write(text)
-    import os
     os.replace("results.dat.tmp", "results.dat")
     print(text, end="")
     failures = checks(rows, reference, "-test" in sys.argv[1:])
-    for f in failures:
-        print("CHECK FAILED:", f)
-    return 1 if failures else 0
+    failures.print_failures(summary=False)
+    return failures.status()
 
 
 if __name__ == "__main__":

@@ -6,54 +6,48 @@ kT within one cutoff of the wall. Writes resultsAlphaSweep.dat and alphaSweep.pn
 checks (the published scene's checks are plotResults.py's).
 """
 import glob
-import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plotResults import QUANTITIES, SeedRun, reference, vector  # noqa: E402
-from dpdResults import dictionary_value  # noqa: E402
+from dpdfoam.checks import write_results
+from dpdfoam.io import body_force
+from dpdfoam.plots import label, plt, save
+from plotResults import QUANTITIES, SeedRun, reference  # this tutorial's runs, beside this script
 
 CASES = (("FCC", "fcc", "blockFrozenWallDict"), ("random, mask", "randomMask", "randomEquilWallDict"))
+SHOWN = (("slip", "slip length b"), ("nu", "nu"), ("rhoNear", "density within one cutoff / bulk"),
+         ("kTNear", "kT within one cutoff"), ("returned", "returned per unit time and area"),
+         ("crossed", "found behind the wall per unit time and area"))
 
 
 def main():
     nu_ref, _, kT_of_shear = reference()
-    g = float(vector(dictionary_value("fcc/constant/dpdProperties", "bodyForce/value"))[0])
+    g = body_force("fcc")
     lines = [f"# The bounce layer's thickness alpha (one seed each): nu without walls {nu_ref:.5f}",
              "# wall         alpha " + " ".join(f"{k:>14s}" for k in QUANTITIES)]
     sweeps = {}
-    for label, case, builder in CASES:
+    for wall, case, builder in CASES:
         paths = glob.glob(f"alphaSweep/{case}_alpha*")
         if not paths:
             sys.exit(f"plotAlphaSweep: no alphaSweep/{case}_alpha<a> (run ./Allrun -alphaSweep)")
         alphas = np.array([float(p.rsplit("alpha", 1)[1]) for p in paths])
         order = np.argsort(alphas)
         runs = [SeedRun(paths[k], builder, kT_of_shear, g, nu_ref) for k in order]
-        sweeps[label] = (alphas[order], runs)
-        for a, r in zip(alphas[order], runs):
-            lines.append(f"{label.replace(' ', '_'):12s} {a:6g} " + " ".join(f"{r.q[k]:14.5f}" for k in QUANTITIES))
-    with open("resultsAlphaSweep.dat", "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print(open("resultsAlphaSweep.dat").read(), end="")
+        sweeps[wall] = (alphas[order], runs)
+        lines += [f"{wall.replace(' ', '_'):12s} {a:6g} " + " ".join(f"{r.q[k]:14.5f}" for k in QUANTITIES)
+                  for a, r in zip(alphas[order], runs)]
+    write_results("resultsAlphaSweep.dat", lines)
 
-    shown = (("slip", "slip length b"), ("nu", "nu"), ("rhoNear", "density within one cutoff / bulk"),
-             ("kTNear", "kT within one cutoff"), ("returned", "returned per unit time and area"),
-             ("crossed", "found behind the wall per unit time and area"))
     fig, ax = plt.subplots(2, 3, figsize=(14, 8))
-    for a, (key, title) in zip(ax.flat, shown):
-        for (label, (alphas, runs)), marker in zip(sweeps.items(), "os"):
-            a.plot(alphas, [r.q[key] for r in runs], marker + "-", mfc="none", label=label)
-        a.set_xscale("log"); a.set_xlabel("alpha"); a.set_title(title); a.legend(fontsize=8)
+    for a, (key, title) in zip(ax.flat, SHOWN):
+        for (wall, (alphas, runs)), marker in zip(sweeps.items(), "os"):
+            a.plot(alphas, [r.q[key] for r in runs], marker + "-", mfc="none", label=wall)
+        a.set_xscale("log")
+        label(a, title, "alpha", legend=8)
     ax[0, 1].axhline(nu_ref, color="k", lw=0.8)
     fig.suptitle("Scene 1: the bounce layer's thickness alpha r_c")
-    fig.tight_layout()
-    fig.savefig("alphaSweep.png", dpi=110)
+    save(fig, "alphaSweep.png")
     print("Written alphaSweep.png and resultsAlphaSweep.dat")
     return 0
 

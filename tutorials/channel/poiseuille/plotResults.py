@@ -16,33 +16,21 @@ and kT, 1 % for nu).
 """
 import glob
 import math
-import os
 import re
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from dpdResults import dictionary_value, kT_against_shear, latest, read_dict, read_table  # noqa: E402
+from dpdfoam.channel import no_wall_reference
+from dpdfoam.checks import Checks, write_results
+from dpdfoam.io import body_force, dictionary_value, latest, latest_fit, latest_profile, log_count, read_dict, read_text, vector
+from dpdfoam.plots import draw_kT_of_shear, draw_no_slip_poiseuille, label, plt, save
+from dpdfoam.published import read_published
+from dpdfoam.snapshots import same_particles
+from dpdfoam.stats import mean_and_error
 
 WALLS = (("FCC", "fcc", "blockFrozenWallDict"), ("random", "randomMask", "randomEquilWallDict"))
-# The paper's counts (docs/scenes.md scene 1).
-PUBLISHED = {"fluid": 21600, "wall": 2160}
 QUANTITIES = ("nu", "slip", "rhoNear", "rhoFirst", "kTNear", "kTBulkVsNoWall", "returned", "crossed")
-
-
-def vector(text):
-    return np.array([float(v) for v in text.strip("()").split()])
-
-
-def log_count(path, label):
-    """The number after 'label :' in a tool's log."""
-    m = re.search(rf"^{label}\s*:\s*(\d+)", open(path).read(), re.M)
-    return int(m.group(1)) if m else float("nan")
 
 
 def wall_events(log, start):
@@ -50,7 +38,7 @@ def wall_events(log, start):
     over the reports after `start`, and the time they cover."""
     returned = crossed = 0
     first = last = None
-    for t, walls in re.findall(r"^Time = (\S+).*?\n.*?\n\s+walls since last report:([^\n]*)", open(log).read(), re.M):
+    for t, walls in re.findall(r"^Time = (\S+).*?\n.*?\n\s+walls since last report:([^\n]*)", read_text(log), re.M):
         t = float(t)
         if last is not None and last >= start:
             returned += sum(int(n) for n in re.findall(r"returned (\d+)", walls))
@@ -65,174 +53,140 @@ class SeedRun:
 
     def __init__(self, path, builder, kT_of_shear, g, nu_ref):
         self.path = path
-        self.fit = read_dict(latest(f"{path}/postProcessing/fitSlipLength/*/fit.dat"))
-        self.table = read_table(latest(f"{path}/postProcessing/profileBins/*/channelProfile.dat"))
-        lo, hi = self.fit["wallPosition"]
-        z, rho, kT = self.table["z"], self.table["density"], self.table["kT"]
+        fit, self.table = latest_fit(path), latest_profile(path)
+        lo, hi = self.walls = tuple(fit["wallPosition"])
+        z, rho, kT, count = (self.table[k] for k in ("z", "density", "kT", "count"))
         dist = np.minimum(z - lo, hi - z)
         centre = 0.5 * (lo + hi)
         bulk_rho = np.mean(rho[np.abs(z - centre) < 0.25 * (hi - lo)])
-        near = dist < 1.0
+        near, bulk = dist < 1.0, dist > 3.0
         shear = g * np.abs(z - centre) / nu_ref
-        bulk = dist > 3.0
-        box_lo = vector(dictionary_value(f"{path}/system/{builder}", "box/min"))
-        box_hi = vector(dictionary_value(f"{path}/system/{builder}", "box/max"))
-        area = 2.0 * (box_hi[0] - box_lo[0]) * (box_hi[1] - box_lo[1])
+        box = [vector(dictionary_value(f"{path}/system/{builder}", f"box/{k}")) for k in ("min", "max")]
+        area = 2.0 * (box[1][0] - box[0][0]) * (box[1][1] - box[0][1])
         start = float(dictionary_value(f"{path}/system/controlDict", "functions/channelProfile/startTime"))
         returned, crossed, span = wall_events(f"{path}/log.dpdFoamLike", start)
         self.q = {
-            "nu": self.fit["nu"],
-            "slip": 0.5 * sum(self.fit["slipLength"]),  # the two walls' mean: their slip is one property
+            "nu": fit["nu"],
+            "slip": 0.5 * sum(fit["slipLength"]),  # the two walls' mean: their slip is one property
             "rhoNear": np.mean(rho[near]) / bulk_rho,
             "rhoFirst": np.mean([rho[np.argmin(np.where(side, dist, np.inf))] for side in (z < centre, z > centre)]) / bulk_rho,
-            "kTNear": np.average(kT[near], weights=self.table["count"][near]),  # empty bins read kT 0
-            "kTBulkVsNoWall": np.average(kT[bulk] - np.interp(shear[bulk], *kT_of_shear), weights=self.table["count"][bulk]),
+            "kTNear": np.average(kT[near], weights=count[near]),  # empty bins read kT 0
+            "kTBulkVsNoWall": np.average(kT[bulk] - np.interp(shear[bulk], *kT_of_shear), weights=count[bulk]),
             "returned": returned / (span * area),
             "crossed": crossed / (span * area),
         }
-        self.interior = dist > 1.0
-        self.flatness = np.max(np.abs(rho[self.interior] / np.mean(rho[self.interior]) - 1.0))
-        self.walls = (lo, hi)
+        interior = dist > 1.0
+        self.flatness = np.max(np.abs(rho[interior] / np.mean(rho[interior]) - 1.0))
 
 
-def mean_and_error(values):
-    v = np.asarray(values, dtype=float)
-    return np.mean(v), (np.std(v, ddof=1) / math.sqrt(len(v)) if len(v) > 1 else float("nan"))
-
-
-def counts_table(label, case, builder):
+def counts_table(wall, case, builder, published):
     """Built fluid and wall particles (seed 1) beside the paper's and the wall at the paper's depth."""
-    run = f"runs/{case}_seed1"
-    log = f"{run}/log.{'blockFrozenWall' if builder == 'blockFrozenWallDict' else 'randomEquilWall'}"
-    fluid = log_count(log, "Fluid particles")
+    log = f"runs/{case}_seed1/log.{builder[:-4]}"
+    fluid, fluid_paper, wall_paper = log_count(log, "Fluid particles"), published[(case, "fluid")], published[(case, "wall")]
     if builder == "blockFrozenWallDict":
         walls = [(int(n), int(m) if m else int(n)) for n, m in
-                 re.findall(r"^Wall \S+ : (\d+) frozen particles(?: \((\d+) in the lattice)?", open(log).read(), re.M)]
+                 re.findall(r"^Wall \S+ : (\d+) frozen particles(?: \((\d+) in the lattice)?", read_text(log), re.M)]
         built, full = sum(n for n, _ in walls), sum(m for _, m in walls)
     else:
         built = log_count(log, "Frozen particles")
         full = built + log_count(log, "Dropped")
-    return (f"{label:14s} fluid {fluid} (published {PUBLISHED['fluid']}, {100 * (fluid / PUBLISHED['fluid'] - 1):+.2f} %)"
-            f"  wall at the published depth {full} (published {PUBLISHED['wall']}), built within one cutoff {built}")
+    return (f"{wall:14s} fluid {fluid} (published {fluid_paper}, {100 * (fluid / fluid_paper - 1):+.2f} %)"
+            f"  wall at the published depth {full} (published {wall_paper}), built within one cutoff {built}")
 
 
 def reference():
     """nu without walls, its error, and kT against the shear rate there (viscosity/)."""
-    ref = read_dict(latest("viscosity/postProcessing/fitSlipLength/*/fit.dat"))
-    periodic = read_table(latest("viscosity/postProcessing/profileBins/*/viscosityProfile.dat"))
-    g = float(vector(dictionary_value("viscosity/constant/dpdProperties", "bodyForce/value"))[0])
-    return ref["nu"], ref["nuError"], kT_against_shear(periodic, g, ref["nu"])
+    ref = no_wall_reference()
+    return ref["nu"], ref["nuError"], ref["kT_of_shear"]
 
 
-def same_particles(a, b):
-    """Whether two snapshots hold the same particles (positions and species, in id order)."""
-    import h5py
+def seed_runs(case, builder, kT_of_shear, g, nu_ref):
+    paths = sorted(glob.glob(f"runs/{case}_seed*"), key=lambda p: int(p.rsplit("seed", 1)[1]))
+    if not paths:
+        sys.exit(f"plotResults: no runs/{case}_seed<n> (run ./Allrun)")
+    runs = [SeedRun(p, builder, kT_of_shear, g, nu_ref) for p in paths]
+    return runs, {k: mean_and_error([r.q[k] for r in runs]) for k in QUANTITIES}
 
-    def columns(path):
-        with h5py.File(path, "r") as f:
-            order = np.argsort(np.array(f["particles/id"]))
-            return [np.array(f[f"particles/{k}"])[order] for k in ("position", "species")]
 
-    return all(np.array_equal(x, y) for x, y in zip(columns(a), columns(b)))
+def wall_checks(checks, wall, runs, s, nu_ref, nu_ref_err, kT_set, kT_tolerance):
+    nu, nu_se = s["nu"]
+    rel, sigma = nu / nu_ref - 1.0, math.hypot(nu_se, nu_ref_err) / nu_ref
+    checks.add(f"{wall}: nu within 3 % of nu without walls, its standard error within 1 %",
+               abs(rel) < 0.03 and sigma <= 0.01, f"{100 * rel:+.2f} % (1 sigma {100 * sigma:.2f} %)")
+    dkT, dkT_se = s["kTBulkVsNoWall"]
+    checks.add(f"{wall}: bulk kT within {100 * kT_tolerance:g} % of the no-wall fluid's at the same shear "
+               f"rate, its standard error within a third of that", abs(dkT) < kT_tolerance * kT_set
+               and dkT_se <= kT_tolerance * kT_set / 3, f"{dkT:+.4f} +- {dkT_se:.4f}")
+    flat = np.max([r.flatness for r in runs])
+    checks.add(f"{wall}: density flat within 5 % beyond one cutoff of the walls (every seed)", flat < 0.05,
+               f"largest deviation {100 * flat:.2f} %")
+    # No slip (docs/walls.md 3.2): |b| < 0.1 moves the centre line by 4 b / d < 1.3 % at d = 30.
+    b, b_se = s["slip"]
+    checks.add(f"{wall}: no slip, |b| < 0.1, its standard error within a third of that",
+               abs(b) < 0.1 and b_se <= 0.1 / 3, f"{b:+.4f} +- {b_se:.4f}")
 
 
 def main():
     test = "-test" in sys.argv
-    g = float(vector(dictionary_value("fcc/constant/dpdProperties", "bodyForce/value"))[0])
+    g = body_force("fcc")
     kT_set = float(dictionary_value("fcc/constant/dpdProperties", "kT"))
     nu_ref, nu_ref_err, kT_of_shear = reference()
-    kT_tolerance = 0.02 if test else 0.01
-
+    published = read_published("published.dat")["counts"]
     lines = [f"# Scene 1 (Liu and Chang 2010) as published: g {g:g}; nu without walls {nu_ref:.5f} +- {nu_ref_err:.5f}",
              "# Built against published (seed 1)" + (": the test's narrow channel, not the published size" if test else ":")]
-    checks, results = [], {}
-    for label, case, builder in WALLS:
-        paths = sorted(glob.glob(f"runs/{case}_seed*"), key=lambda p: int(p.rsplit("seed", 1)[1]))
-        if not paths:
-            sys.exit(f"plotResults: no runs/{case}_seed<n> (run ./Allrun)")
-        runs = [SeedRun(p, builder, kT_of_shear, g, nu_ref) for p in paths]
-        results[label] = (runs, {k: mean_and_error([r.q[k] for r in runs]) for k in QUANTITIES})
-        lines.append("#   " + counts_table(label, case, builder))
+    results = {wall: seed_runs(case, builder, kT_of_shear, g, nu_ref) for wall, case, builder in WALLS}
+    lines += ["#   " + counts_table(wall, case, builder, published) for wall, case, builder in WALLS]
+    checks = Checks()
     same = same_particles("runs/randomGmsh/0/particles.h5", "runs/randomMask_seed1/0/particles.h5")
-    checks.append(("the gmsh file builds the mask's random wall (seed 1), particle for particle", same,
-                   "identical" if same else "different"))
+    checks.add("the gmsh file builds the mask's random wall (seed 1), particle for particle", same,
+               "identical" if same else "different")
 
     lines.append("# Per wall, the mean over the seeds +- its standard error: nu; slip length b (the two walls' "
                  "mean); density within one cutoff of the walls and in their first bins, over the bulk's; kT within one "
                  "cutoff; kT of the bulk (beyond 3 cutoffs) minus the no-wall box's at the same shear rate; particles "
                  "the bounce layer turned round and particles found behind the wall, per unit time and wall area")
     lines.append("# wall           seeds " + " ".join(f"{k:>20s}" for k in QUANTITIES))
-    for label, (runs, s) in results.items():
-        lines.append(f"{label.replace(' ', '_'):16s} {len(runs):5d} " +
+    for wall, (runs, s) in results.items():
+        lines.append(f"{wall.replace(' ', '_'):16s} {len(runs):5d} " +
                      " ".join(f"{s[k][0]:11.5f} +- {s[k][1]:.5f}" for k in QUANTITIES))
-        for r in runs:
-            lines.append(f"#   {r.path:22s} " + " ".join(f"{r.q[k]:20.5f}" for k in QUANTITIES))
+        lines += [f"#   {r.path:22s} " + " ".join(f"{r.q[k]:20.5f}" for k in QUANTITIES) for r in runs]
+    for wall, (runs, s) in results.items():
+        wall_checks(checks, wall, runs, s, nu_ref, nu_ref_err, kT_set, 0.02 if test else 0.01)
 
-    for label, (runs, s) in results.items():
-        nu, nu_se = s["nu"]
-        rel = nu / nu_ref - 1.0
-        sigma = math.hypot(nu_se, nu_ref_err) / nu_ref
-        checks.append((f"{label}: nu within 3 % of nu without walls, its standard error within 1 %",
-                       abs(rel) < 0.03 and sigma <= 0.01, f"{100 * rel:+.2f} % (1 sigma {100 * sigma:.2f} %)"))
-        dkT, dkT_se = s["kTBulkVsNoWall"]
-        checks.append((f"{label}: bulk kT within {100 * kT_tolerance:g} % of the no-wall fluid's at the same shear "
-                       f"rate, its standard error within a third of that", abs(dkT) < kT_tolerance * kT_set
-                       and dkT_se <= kT_tolerance * kT_set / 3, f"{dkT:+.4f} +- {dkT_se:.4f}"))
-        flat = np.max([r.flatness for r in runs])
-        checks.append((f"{label}: density flat within 5 % beyond one cutoff of the walls (every seed)", flat < 0.05,
-                       f"largest deviation {100 * flat:.2f} %"))
-        # No slip (docs/walls.md 3.2): |b| < 0.1 moves the centre line by 4 b / d < 1.3 % at d = 30.
-        b, b_se = s["slip"]
-        checks.append((f"{label}: no slip, |b| < 0.1, its standard error within a third of that",
-                       abs(b) < 0.1 and b_se <= 0.1 / 3, f"{b:+.4f} +- {b_se:.4f}"))
-
-    fvm = [read_dict(latest(f"{p}/postProcessing/compareFVM/*/compare.dat")) for p in
-           sorted(glob.glob("runs/fcc_seed*"))]
+    fvm = [read_dict(latest(f"{p}/postProcessing/compareFVM/*/compare.dat")) for p in sorted(glob.glob("runs/fcc_seed*"))]
     worst = np.max([c["L2"] for c in fvm])
-    checks.append(("FCC: DPD within 3 % (relative L2) of simpleFoam (nu without walls, no slip), every seed",
-                   worst < 0.03, f"largest L2 {worst:.4f} (noise L2 {max(c['noiseL2'] for c in fvm):.4f})"))
-
-    with open("results.dat", "w") as f:
-        f.write("\n".join(lines) + "\n")
-        for name, ok, value in checks:
-            f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
-    print(open("results.dat").read(), end="")
+    checks.add("FCC: DPD within 3 % (relative L2) of simpleFoam (nu without walls, no slip), every seed",
+               worst < 0.03, f"largest L2 {worst:.4f} (noise L2 {max(c['noiseL2'] for c in fvm):.4f})")
+    write_results("results.dat", lines, checks)
     plot(results, g, nu_ref, kT_set, kT_of_shear)
-    return 0 if all(ok for _, ok, _ in checks) else 1
+    return checks.status()
 
 
 def plot(results, g, nu_ref, kT_set, kT_of_shear):
     fig, ax = plt.subplots(2, 2, figsize=(13, 9))
-    for (label, (runs, s)), marker in zip(results.items(), "osd"):
+    for (name, (runs, s)), marker in zip(results.items(), "osd"):
         t = runs[0].table
         lo, hi = runs[0].walls
         mean = {k: np.mean([r.table[k] for r in runs], axis=0) for k in ("ux", "density", "kT")}
         ax[0, 0].plot(t["z"], mean["ux"], marker, ms=2.5, mfc="none",
-                      label=f"{label}: nu {s['nu'][0]:.4f}, b {s['slip'][0]:+.3f} +- {s['slip'][1]:.3f}")
+                      label=f"{name}: nu {s['nu'][0]:.4f}, b {s['slip'][0]:+.3f} +- {s['slip'][1]:.3f}")
         dist = np.concatenate([t["z"] - lo, hi - t["z"]])
         near = dist < 2.0
-        ax[0, 1].plot(dist[near], np.concatenate([mean["density"]] * 2)[near], marker, ms=3, mfc="none", label=label)
-        ax[1, 0].plot(t["z"], mean["kT"], marker, ms=2.5, mfc="none", label=label)
-        ax[1, 1].errorbar([r.q["slip"] for r in runs], [r.q["nu"] for r in runs], fmt=marker, mfc="none", label=label)
-    zz = np.linspace(lo, hi, 400)
-    d, centre = hi - lo, 0.5 * (lo + hi)
-    ax[0, 0].plot(zz, g * d * d / (8 * nu_ref) * (1 - (2 * (zz - centre) / d) ** 2), "k-", lw=1,
-                  label=f"no slip, nu {nu_ref:.4f} (no-wall box)")
+        ax[0, 1].plot(dist[near], np.concatenate([mean["density"]] * 2)[near], marker, ms=3, mfc="none", label=name)
+        ax[1, 0].plot(t["z"], mean["kT"], marker, ms=2.5, mfc="none", label=name)
+        ax[1, 1].errorbar([r.q["slip"] for r in runs], [r.q["nu"] for r in runs], fmt=marker, mfc="none", label=name)
+    d = hi - lo
+    draw_no_slip_poiseuille(ax[0, 0], (lo, hi), g, nu_ref, f"no slip, nu {nu_ref:.4f} (no-wall box)", lw=1)
     ax[1, 0].axhline(kT_set, color="k", lw=0.8)
-    shear, kT_box = kT_of_shear
-    inside = shear * nu_ref / g <= 0.5 * d
-    for side in (1, -1):  # the no-wall box at the channel's local shear rate g |z - centre| / nu
-        ax[1, 0].plot(centre + side * shear[inside] * nu_ref / g, kT_box[inside], "k--", lw=0.8,
-                      label="no-wall box at the same shear rate" if side == 1 else None)
+    draw_kT_of_shear(ax[1, 0], 0.5 * (lo + hi), kT_of_shear, g, nu_ref, half_width=0.5 * d)
     ax[1, 1].axhline(nu_ref, color="k", lw=0.8, label="nu without walls")
     ax[1, 1].axvline(0.0, color="gray", lw=0.8)
     titles = (("velocity (mean over the seeds)", "z", "u_x"), ("density next to the walls", "distance from the wall", "density"),
               ("kT about the local flow", "z", "kT"), ("each seed's fit", "slip length b", "nu"))
     for a, (title, x, y) in zip(ax.flat, titles):
-        a.set_title(title); a.set_xlabel(x); a.set_ylabel(y); a.legend(fontsize=7)
+        label(a, title, x, y, legend=7)
     fig.suptitle(f"Scene 1 as published: Poiseuille flow between FCC and random walls with a bounce layer, d = {d:g}, g = {g:g}")
-    fig.tight_layout()
-    fig.savefig("poiseuille.png", dpi=110)
+    save(fig, "poiseuille.png")
     print("Written poiseuille.png and results.dat")
 
 

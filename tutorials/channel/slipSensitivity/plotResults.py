@@ -10,18 +10,14 @@ their mean, the change from the baseline and its combined standard error), sensi
 exits non-zero when a check fails.
 """
 import math
-import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-PROJECT = os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../.."))
-sys.path.insert(0, os.path.join(PROJECT, "etc"))
-from dpdResults import latest, read_dict, read_published, read_sweep  # noqa: E402
+from dpdfoam.checks import Checks, write_results
+from dpdfoam.io import latest_fit, project_path, read_sweep, read_text
+from dpdfoam.plots import label, plt, save
+from dpdfoam.published import read_published, table_value
 
 TEST_MODE = "-test" in sys.argv[1:]
 A_WW = 15.0
@@ -65,48 +61,47 @@ def sweep_runs(directory):
     """runSweep's table in DIRECTORY with the ingredient names beside it: (sweep, [(name, b lower,
     b upper, mean of the walls, its error)] in the table's order)."""
     sweep = read_sweep(f"{directory}/sweep.dat")
-    names = open(f"{directory}/ingredients").read().split()
+    names = read_text(f"{directory}/ingredients").split()
     if len(names) != len(sweep["case"]):
         sys.exit(f"plotResults: {len(names)} ingredient names for {len(sweep['case'])} runs in {directory}")
-    runs = []
-    for k, name in enumerate(names):
-        b0, b1 = sweep["slipLength_0"][k], sweep["slipLength_1"][k]
-        b, e = mean_of_walls(b0, b1, sweep["slipLengthError_0"][k], sweep["slipLengthError_1"][k])
-        runs.append((name, b0, b1, b, e))
-    return sweep, runs
+    return sweep, [(name, b0, b1) + mean_of_walls(b0, b1, e0, e1) for name, b0, b1, e0, e1 in zip(
+        names, sweep["slipLength_0"], sweep["slipLength_1"], sweep["slipLengthError_0"], sweep["slipLengthError_1"])]
 
 
-def scene2_table(f):
-    """Scene 2's rows (ingredient, gamma_fw, b lower, b upper, mean, error) and their checks, written to
-    the open results file: each ingredient's change from the published set at the same gamma_fw."""
+def decided(checks, name, change, error, budget):
+    """The change must be found (at least 3 standard errors) or known well enough to rule it out as the
+    cause of the difference (its standard error within the budget); a change that is not a number
+    decides nothing."""
+    checks.add(f"{name}: the change decided (at least 3 standard errors, or its standard error within {budget:.3g})",
+               abs(change) >= 3 * error or error <= budget, f"{change:+.4f} +- {error:.4f}", change, error)
+
+
+def scene2_table(lines, checks):
+    """Scene 2's rows (ingredient, gamma_fw, b lower, b upper, mean, error) and their lines and checks:
+    each ingredient's change from the published set at the same gamma_fw."""
     sweep, runs = sweep_runs("sweepScene2")
     rows = [(name, g, b0, b1, b, e) for (name, b0, b1, b, e), g in zip(runs, sweep["pairCoeffs/fluid-wall/gamma"])]
-    table = read_published(os.path.join(PROJECT, "tutorials/channel/slipGammaFw/published.dat"))["tables"]["Table 1"]
+    table = read_published(project_path("tutorials/channel/slipGammaFw/published.dat"))["tables"]["Table 1"]
 
     def published_b(gamma):
-        return float(table["slipLength"][np.flatnonzero(np.isclose(table["gamma_fw"], gamma))[0]])
+        return table_value(table, "gamma_fw", gamma, "slipLength")
 
     base = {g: (b, e) for name, g, _, _, b, e in rows if name == "published"}
-    f.write(f"# Scene 2: 2-D Poiseuille, slip by gamma_fw{' (test channel, d = 10)' if TEST_MODE else ''} "
-            "(Li, Hu and Zhou 2009, Table 1)\n")
-    f.write("# ingredient      gamma_fw  b lower   b upper   mean +- err        change from the published set +- err  (errors)\n")
-    checks = []
+    lines.append(f"# Scene 2: 2-D Poiseuille, slip by gamma_fw{' (test channel, d = 10)' if TEST_MODE else ''} "
+                 "(Li, Hu and Zhou 2009, Table 1)")
+    lines.append("# ingredient      gamma_fw  b lower   b upper   mean +- err        change from the published set +- err  (errors)")
     for name, g, b0, b1, b, e in rows:
         if name == "published":
-            f.write(f"scene2 {name:15s} {g:5g}  {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   -   (paper {published_b(g):g})\n")
+            lines.append(f"scene2 {name:15s} {g:5g}  {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   -   (paper {published_b(g):g})")
             continue
         d, de = b - base[g][0], math.hypot(e, base[g][1])
-        f.write(f"scene2 {name:15s} {g:5g}  {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   {d:+.4f} +- {de:.4f}  ({d / de:+.1f})\n")
-        # The change must be found, or known well enough to rule it out as the cause of the difference.
+        lines.append(f"scene2 {name:15s} {g:5g}  {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   {d:+.4f} +- {de:.4f}  ({d / de:+.1f})")
         budget = SCENE2_TEST_BUDGET if TEST_MODE else abs(base[g][0] - published_b(g)) / 3
-        checks.append((f"scene 2, {name} at gamma_fw {g:g}: the change decided (at least 3 standard errors, or "
-                       f"its standard error within {budget:.3g})", bool(abs(d) >= 3 * de or de <= budget),
-                       f"{d:+.4f} +- {de:.4f}"))
-    for g, (b, e) in sorted(base.items()):
-        f.write(f"# scene 2, the published set here minus the paper at gamma_fw {g:g}: {b - published_b(g):+.4f} +- {e:.4f}\n")
-    for name in dict.fromkeys(r[0] for r in rows):
-        f.write(f"# scene 2, {name}: {WHAT_SCENE2.get(name, '')}\n")
-    return (rows, published_b), checks
+        decided(checks, f"scene 2, {name} at gamma_fw {g:g}", d, de, budget)
+    lines += [f"# scene 2, the published set here minus the paper at gamma_fw {g:g}: {b - published_b(g):+.4f} +- {e:.4f}"
+              for g, (b, e) in sorted(base.items())]
+    lines += [f"# scene 2, {name}: {WHAT_SCENE2.get(name, '')}" for name in dict.fromkeys(r[0] for r in rows)]
+    return rows, published_b
 
 
 def scene2_plot(ax, rows, published_b):
@@ -116,70 +111,55 @@ def scene2_plot(ax, rows, published_b):
     for j, g in enumerate(gammas):
         sel = [r for r in rows if r[1] == g]
         x = np.array([names.index(r[0]) for r in sel]) + 0.1 * (j - 0.5 * (len(gammas) - 1))
-        line = ax.errorbar(x, [r[4] for r in sel], yerr=[r[5] for r in sel], fmt="o", capsize=3,
-                           label=f"gamma_fw {g:g}")
+        line = ax.errorbar(x, [r[4] for r in sel], yerr=[r[5] for r in sel], fmt="o", capsize=3, label=f"gamma_fw {g:g}")
         ax.axhline(published_b(g), color=line[0].get_color(), ls="--", lw=0.8, label=f"paper at gamma_fw {g:g}")
     ax.set_xticks(np.arange(len(names)))
     ax.set_xticklabels(names, rotation=20)
-    ax.set_ylabel("slip length (mean of the walls)")
-    ax.set_title("2-D Poiseuille scene: one unstated ingredient changed at a time")
-    ax.legend(fontsize=8)
+    label(ax, "2-D Poiseuille scene: one unstated ingredient changed at a time", None, "slip length (mean of the walls)",
+          legend=8)
 
 
 def main():
     sweep, runs = sweep_runs("sweep")
     rows = [run + (shear,) for run, shear in zip(runs, sweep["shearRate"])]
-    fit = read_dict(latest("sweep/fitRange/postProcessing/fitSlipLength/*/fit.dat"))
+    fit = latest_fit("sweep/fitRange")
     b, e = mean_of_walls(fit["slipLength"][0], fit["slipLength"][1], fit["slipLengthError"][0], fit["slipLengthError"][1])
     rows.append(("fitRange", fit["slipLength"][0], fit["slipLength"][1], b, e, fit["shearRate"]))
 
-    published = read_published(os.path.join(PROJECT, "tutorials/channel/couetteSlip/published.dat"))["tables"]["Table 1"]
-    b_published = float(published["slipLength"][np.flatnonzero(np.isclose(published["a_ww"], A_WW))[0]])
+    table = read_published(project_path("tutorials/channel/couetteSlip/published.dat"))["tables"]["Table 1"]
+    b_published = table_value(table, "a_ww", A_WW, "slipLength")
     base_b, base_e = rows[0][3], rows[0][4]
-    checks = []
-    with open("results.dat", "w") as f:
-        f.write(f"# Slip sensitivity, Couette scene 3 at a_ww = {A_WW:g}{' (test channel, d = 10)' if TEST_MODE else ''}: "
-                f"published b = {b_published:g} (Xu et al. 2019, Table 1)\n")
-        f.write("# ingredient      b lower   b upper   mean +- err        change from the published set +- err  (errors)  shear rate\n")
-        for name, b0, b1, b, e, shear in rows:
-            if name == "published":
-                f.write(f"{name:15s} {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   -                                      {shear:.4f}\n")
-                continue
-            # The fit range reuses the baseline's data: the two errors are correlated, and the
-            # independent combination is an upper bound.
-            d, de = b - base_b, math.hypot(e, base_e)
-            f.write(f"{name:15s} {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   {d:+.4f} +- {de:.4f}  ({d / de:+.1f})"
-                    f"{'  (same data: error an upper bound)' if name == 'fitRange' else ''}  {shear:.4f}\n")
-            checks.append((f"{name}: the change decided (at least 3 standard errors, or its standard error within "
-                           f"{DIFFERENCE_BUDGET:g})", bool(abs(d) >= 3 * de or de <= DIFFERENCE_BUDGET),
-                           f"{d:+.4f} +- {de:.4f}"))
-        f.write(f"# the published set here minus the paper: {base_b - b_published:+.4f} +- {base_e:.4f}\n")
-        for name, _, _, _, _, _ in rows:
-            f.write(f"# {name}: {WHAT.get(name, '')}\n")
-        scene2, scene2_checks = scene2_table(f)
-        checks += scene2_checks
-        for name, ok, value in checks:
-            f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
-    print(open("results.dat").read(), end="")
+    checks = Checks()
+    lines = [f"# Slip sensitivity, Couette scene 3 at a_ww = {A_WW:g}{' (test channel, d = 10)' if TEST_MODE else ''}: "
+             f"published b = {b_published:g} (Xu et al. 2019, Table 1)",
+             "# ingredient      b lower   b upper   mean +- err        change from the published set +- err  (errors)  shear rate"]
+    for name, b0, b1, b, e, shear in rows:
+        if name == "published":
+            lines.append(f"{name:15s} {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   -                                      {shear:.4f}")
+            continue
+        # The fit range reuses the baseline's data: the two errors are correlated, and the independent
+        # combination is an upper bound.
+        d, de = b - base_b, math.hypot(e, base_e)
+        lines.append(f"{name:15s} {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   {d:+.4f} +- {de:.4f}  ({d / de:+.1f})"
+                     f"{'  (same data: error an upper bound)' if name == 'fitRange' else ''}  {shear:.4f}")
+        decided(checks, name, d, de, DIFFERENCE_BUDGET)
+    lines.append(f"# the published set here minus the paper: {base_b - b_published:+.4f} +- {base_e:.4f}")
+    lines += [f"# {r[0]}: {WHAT.get(r[0], '')}" for r in rows]
+    scene2 = scene2_table(lines, checks)
+    write_results("results.dat", lines, checks)
 
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(15, 4.8), gridspec_kw={"width_ratios": [3, 2]})
-    labels = [r[0] for r in rows]
-    means = np.array([r[3] for r in rows])
-    errs = np.array([r[4] for r in rows])
     x = np.arange(len(rows))
-    ax.errorbar(x, means, yerr=errs, fmt="ko", capsize=3, label="this code (mean of the walls)")
+    ax.errorbar(x, [r[3] for r in rows], yerr=[r[4] for r in rows], fmt="ko", capsize=3, label="this code (mean of the walls)")
     ax.axhline(b_published, color="r", ls="--", label=f"published {b_published:g}")
     ax.axhline(base_b, color="gray", ls=":", label="published parameters here")
     ax.set_xticks(x)
-    ax.set_xticklabels(labels, rotation=20)
-    ax.set_ylabel("slip length")
-    ax.set_title(f"Couette scene at a_ww = {A_WW:g}: one unstated ingredient changed at a time")
-    ax.legend(fontsize=8)
+    ax.set_xticklabels([r[0] for r in rows], rotation=20)
+    label(ax, f"Couette scene at a_ww = {A_WW:g}: one unstated ingredient changed at a time", None, "slip length", legend=8)
     scene2_plot(ax2, *scene2)
-    fig.tight_layout()
-    fig.savefig("sensitivity.png", dpi=100)
+    save(fig, "sensitivity.png", dpi=100)
     print("Written sensitivity.png and results.dat")
-    return 0 if all(ok for _, ok, _ in checks) else 1
+    return checks.status()
 
 
 if __name__ == "__main__":

@@ -12,17 +12,13 @@ calibration/gammaL.dat (a dictionary the Allrun and plotResults.py read) and cal
 non-zero when either is not found or b rises with gamma_L.
 """
 import math
-import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from dpdResults import read_dict, read_sweep  # noqa: E402
+from dpdfoam.checks import Checks, print_file
+from dpdfoam.io import read_dict, read_sweep
+from dpdfoam.plots import label, plt, save
 
 
 def option(name, default):
@@ -43,47 +39,11 @@ def gamma_for(target, gammas, b, err):
     for lo, hi in zip(order[:-1], order[1:]):
         if (b[lo] - target) * (b[hi] - target) <= 0.0:
             w = (target - b[lo]) / (b[hi] - b[lo])
-            inv = (1 - w) / gammas[lo] + w / gammas[hi]
-            return 1.0 / inv, (1 - w) * err[lo] + w * err[hi]
+            return 1.0 / ((1 - w) / gammas[lo] + w / gammas[hi]), (1 - w) * err[lo] + w * err[hi]
     return None
 
 
-def main():
-    period, slip_target = option("-period", 10.0), option("-slip", 10.0)
-    hw = {k: np.asarray(v) if isinstance(v, list) else v for k, v in read_dict("calibration/hydrodynamicWall.dat").items()}
-    sweep = read_sweep("calibration/sweepPoiseuille/sweep.dat")
-    gammas = np.asarray(sweep["walls/lower/tunableSlip/gammaL"], dtype=float)
-    b, err = hw["slipLength"], hw["slipLengthError"]
-    checks = []
-    order = np.argsort(gammas)
-    for lo, hi in zip(order[:-1], order[1:]):
-        step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
-        checks.append((f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g}",
-                       step > -3 * se, f"{step:+.4f} +- {se:.4f}"))
-    picks = {}
-    found = gamma_for(slip_target, gammas, b, err)
-    checks.append((f"the sweep brackets b = {slip_target:g} (gammaGas)", found is not None,
-                   f"b from {b.min():.3f} to {b.max():.3f}"))
-    if found:
-        picks["gammaGas"] = (found[0], slip_target, found[1])
-    # The other local slip lengths the study sweeps (-slips): their gas gamma_L as lists.
-    others = [(b_other, gamma_for(b_other, gammas, b, err)) for b_other in list_option("-slips")]
-    for b_other, found_other in others:
-        checks.append((f"the sweep brackets b = {b_other:g} (gammaGasOf)", found_other is not None,
-                       f"b from {b.min():.3f} to {b.max():.3f}"))
-    # No slip: where b crosses 0, or, where the friction saturates first (the stiffest step of the sweep
-    # no longer lowers b decisively), the stiffest gamma_L with the slip it leaves, b0 (plotResults.py
-    # holds the stripes to the reference with that residual slip).
-    found = gamma_for(0.0, gammas, b, err)
-    stiff, before = order[-1], order[-2]
-    saturated = b[before] - b[stiff] < 3 * math.hypot(err[before], err[stiff])
-    if found:
-        picks["gammaNoSlip"] = (found[0], 0.0, found[1])
-    elif saturated:
-        picks["gammaNoSlip"] = (gammas[stiff], b[stiff], err[stiff])
-    checks.append(("the sweep brackets b = 0, or b saturates at the stiff end (gammaNoSlip)", "gammaNoSlip" in picks,
-                   f"b from {b.min():.3f} to {b.max():.3f}; last step {b[before] - b[stiff]:+.3f}"))
-
+def write_calibration(hw, period, slip_target, picks, others):
     with open("calibration/gammaL.dat", "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object gammaL; }\n\n")
         f.write("// The striped wall's calibration (calibrate.py from calibration/hydrodynamicWall.dat): the wall acts\n"
@@ -92,19 +52,54 @@ def main():
                 f"offset          {hw['offset']:.6f};\nperiod          {period:g};\nslipTarget      {slip_target:g};\n")
         for name, (gamma, slip, e) in picks.items():
             f.write(f"{name:<17} {gamma:.6f};\n{name + 'Slip':<17} {slip:.6f};\n{name + 'SlipError':<17} {e:.6f};\n")
-        found_others = [(b_other, g) for b_other, g in others if g]
-        if found_others:
-            f.write(f"slipTargets       ({' '.join(f'{b_other:g}' for b_other, _ in found_others)});\n"
-                    f"gammaGasOf        ({' '.join(f'{g[0]:.6f}' for _, g in found_others)});\n"
-                    f"gammaGasSlipErrorOf ({' '.join(f'{g[1]:.6f}' for _, g in found_others)});\n")
-    print(open("calibration/gammaL.dat").read(), end="")
+        found = [(b_other, g) for b_other, g in others if g]
+        if found:
+            f.write(f"slipTargets       ({' '.join(f'{b_other:g}' for b_other, _ in found)});\n"
+                    f"gammaGasOf        ({' '.join(f'{g[0]:.6f}' for _, g in found)});\n"
+                    f"gammaGasSlipErrorOf ({' '.join(f'{g[1]:.6f}' for _, g in found)});\n")
+    print_file("calibration/gammaL.dat")
+
+
+def main():
+    period, slip_target = option("-period", 10.0), option("-slip", 10.0)
+    hw = {k: np.asarray(v) if isinstance(v, list) else v for k, v in read_dict("calibration/hydrodynamicWall.dat").items()}
+    gammas = np.asarray(read_sweep("calibration/sweepPoiseuille/sweep.dat")["walls/lower/tunableSlip/gammaL"], dtype=float)
+    b, err = hw["slipLength"], hw["slipLengthError"]
+    span = f"b from {b.min():.3f} to {b.max():.3f}"
+    checks = Checks()
+    order = np.argsort(gammas)
+    for lo, hi in zip(order[:-1], order[1:]):
+        step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
+        checks.add(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g}", step > -3 * se,
+                   f"{step:+.4f} +- {se:.4f}")
+    picks = {}
+    found = gamma_for(slip_target, gammas, b, err)
+    checks.add(f"the sweep brackets b = {slip_target:g} (gammaGas)", found is not None, span)
+    if found:
+        picks["gammaGas"] = (found[0], slip_target, found[1])
+    # The other local slip lengths the study sweeps (-slips): their gas gamma_L as lists.
+    others = [(b_other, gamma_for(b_other, gammas, b, err)) for b_other in list_option("-slips")]
+    for b_other, found_other in others:
+        checks.add(f"the sweep brackets b = {b_other:g} (gammaGasOf)", found_other is not None, span)
+    # No slip: where b crosses 0, or, where the friction saturates first (the stiffest step of the sweep
+    # no longer lowers b decisively), the stiffest gamma_L with the slip it leaves, b0 (plotResults.py
+    # holds the stripes to the reference with that residual slip).
+    found = gamma_for(0.0, gammas, b, err)
+    stiff, before = order[-1], order[-2]
+    if found:
+        picks["gammaNoSlip"] = (found[0], 0.0, found[1])
+    elif b[before] - b[stiff] < 3 * math.hypot(err[before], err[stiff]):
+        picks["gammaNoSlip"] = (gammas[stiff], b[stiff], err[stiff])
+    checks.add("the sweep brackets b = 0, or b saturates at the stiff end (gammaNoSlip)", "gammaNoSlip" in picks,
+               f"{span}; last step {b[before] - b[stiff]:+.3f}")
+
+    write_calibration(hw, period, slip_target, picks, others)
     print("# gamma_L  b (from the hydrodynamic wall) +- err   apparent Couette / Poiseuille (from the planes)")
     for k in order:
         print(f"{gammas[k]:7g}  {b[k]:+.4f} +- {err[k]:.4f}   {hw['apparentSlipCouette'][k]:+.4f} / "
               f"{hw['apparentSlipPoiseuille'][k]:+.4f}")
     print(f"# chi2 per degree of freedom of the wall's fit: {hw['chi2PerDof']:.3f} ({hw['dof']:g} dof)")
-    for name, ok, value in checks:
-        print(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}")
+    print("\n".join(checks.lines()))
 
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     ax.errorbar(gammas, b, yerr=err, fmt="o-", label="uniform wall: b from the hydrodynamic wall")
@@ -112,13 +107,11 @@ def main():
         ax.plot(gamma, slip, "r*", ms=12)
         ax.annotate(f"{name} {gamma:.3g} (b {slip:.2f})", (gamma, slip), textcoords="offset points", xytext=(-60, 12))
     ax.axhline(0.0, color="gray", ls=":")
-    ax.set_xscale("log"); ax.set_xlabel("gamma_L"); ax.set_ylabel("slip length b")
-    ax.set_title(f"calibration: the wall acts {hw['offset']:.3f} in front of its plane")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig("calibration.png", dpi=100)
+    ax.set_xscale("log")
+    label(ax, f"calibration: the wall acts {hw['offset']:.3f} in front of its plane", "gamma_L", "slip length b", legend=8)
+    save(fig, "calibration.png", dpi=100)
     print("Written calibration.png and calibration/gammaL.dat")
-    return 0 if all(ok for _, ok, _ in checks) else 1
+    return checks.status()
 
 
 if __name__ == "__main__":

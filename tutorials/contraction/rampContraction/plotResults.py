@@ -1,11 +1,8 @@
 #!/usr/bin/env python3
-"""Ramp contraction tutorial: picture, results table and checks (etc/contractionResults.py);
--chains: those of the variant with FENE chains (chains/: resultsChains.dat, contractionChains.png)."""
-import os
+"""Ramp contraction tutorial: picture, results table and checks (dpdfoam.contraction, shared with the other
+contraction); -chains: those of the variant with FENE chains (chains/: resultsChains.dat, contractionChains.png)."""
 import sys
 
-sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", os.path.join(os.path.dirname(__file__), "../../..")), "etc"))
-from contractionResults import main  # noqa: E402
+from dpdfoam.contraction import main
 
-main("Ramp contraction (docs/scenes.md scene 7)", "-test" in sys.argv[1:], chains="-chains" in sys.argv[1:],
-     low_g="-lowG" in sys.argv[1:])
+main("Ramp contraction (docs/scenes.md scene 7)", sys.argv[1:])

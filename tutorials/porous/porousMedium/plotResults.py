@@ -5,9 +5,13 @@ Reads the DPD 2-D field (postProcessing/profileBins/<time>/flowField.dat, 1 x 1 
 log (kT series, particles inside the solid, run time), the simpleFoam twin (simpleFoam/<time>/C, U,
 constant/dpdCase for nu), compareFVM's result (postProcessing/compareFVM/<time>/compare.dat,
 profiles.dat), the built counts (log.randomEquilWall) and the paper's (published.dat, when there).
-Writes porousMedium.png (DPD |u|, density, kT series, profiles across the crack),
-compareFVM.png (DPD |u|, simpleFoam |u|, their difference, the crack's centre line) and results.dat;
-exits non-zero when a check fails.
+Writes porousMedium.png (DPD |u|, density, kT series, profiles across the flow at the sections),
+compareFVM.png (DPD |u|, simpleFoam |u|, their difference, the lines) and results.dat; exits non-zero
+when a check fails. Everything about the geometry comes from the case: the lines are those of
+system/makeFoamCaseDict (compareFVM compares each; the tutorial's is its crack's centre line, which
+crackFromMask.py moves onto the crack of a mask of one's own), the sections those of system/controlDict,
+and the grains, the pores and the bins next to them from the mask (constant/dpdProperties, at the
+bins' centres over the box of system/randomEquilWallDict).
 
 Checks, full scene (the issue's criteria):
   - mean kT within 3.5 % of the set kT = 1: the bins' kT (about each bin's own mean velocity), and the
@@ -15,9 +19,9 @@ Checks, full scene (the issue's criteria):
     kinetic energy per degree of freedom, which a global mean would have counted, is reported);
   - no fluid particle inside the solid at the end (the solver's count);
   - velocity near zero next to the grains: over the bins the grains' surface passes through, the mean
-    DPD velocity is below 10 % of the crack's peak and within 3 % of that peak of the continuum's in
-    the same bins (a slipping wall would leave a velocity of the order of the pore's);
-  - the crack's centre line: relative L2 of DPD against simpleFoam < 10 %;
+    DPD velocity is below 10 % of the lines' peak (the crack's) and within 3 % of that peak of the
+    continuum's in the same bins (a slipping wall would leave a velocity of the order of the pore's);
+  - each line (the crack's centre line): relative L2 of DPD against simpleFoam < 10 %;
   - mean velocity within 10 %: meanVelocityRatio (over the compared bins) and the superficial velocity
     (Darcy permeability) ratio.
 Each check first asserts that the noise of its quantity is within a budget (NOISE_BUDGETS below), so
@@ -36,14 +40,14 @@ import os
 import re
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-sys.path.insert(0, os.path.join(os.environ.get("DPD_PROJECT_DIR", "../../.."), "etc"))
-from dpdResults import latest, parse_dict, read_dict, read_published, read_table  # noqa: E402
+from dpdfoam.checks import Checks, write_results
+from dpdfoam.io import (dictionary_value, foam_latest_time, foam_vector_field, latest, log_values, read_compare,
+                        read_dict, read_sections, read_table, read_text, run_finished)
+from dpdfoam.mask import case_mask, distance_to_solid, local_pore_size, on_grid
+from dpdfoam.plots import label, plt, save
+from dpdfoam.published import read_published
 
 test_mode = "-test" in sys.argv[1:]
 
@@ -59,102 +63,43 @@ NOISE_BUDGETS = {
 }
 
 
-def read_compare(path):
-    """compare.dat: the top-level entries, and each line's sub-dictionary."""
-    text = open(path).read()
-    head, _, rest = text.partition("\nlines")
-    return parse_dict(head), {name: parse_dict(body) for name, body in re.findall(r"(\w+)\s*\{([^{}]*)\}", rest)}
-
-
 def solver_log():
-    text = open("log.dpdFoamLike").read()
-    times = [float(v) for v in re.findall(r"^Time = ([-0-9.eE+]+)", text, re.M)]
-    kts = [float(v) for v in re.findall(r"kT = ([-0-9.eE+]+)", text)]
-    inside = [int(v) for v in re.findall(r"inside walls now (\d+)", text)]
-    crossed = [int(v) for v in re.findall(r"geometry returned \d+ crossed (\d+);", text)]
-    run = re.search(r"Run finished: (\d+) steps in ([0-9.eE+]+) s, ([0-9.eE+]+) particle-steps/s", text)
-    if not kts or not inside or not run:
+    """The report times and kT series, the particles inside the solid at the end, those the bounce layer
+    found crossed over the run, and the run's (steps, seconds, rate)."""
+    text = read_text("log.dpdFoamLike")
+    times, kts = log_values(text, r"^Time = ([-0-9.eE+]+)", flags=re.M), log_values(text, r"kT = ([-0-9.eE+]+)")
+    inside = log_values(text, r"inside walls now (\d+)", int)
+    crossed = log_values(text, r"geometry returned \d+ crossed (\d+);", int)
+    if not kts or not inside or "Run finished" not in text:
         sys.exit("plotResults: log.dpdFoamLike has no report or no end")
-    return np.array(times[-len(kts):]), np.array(kts), inside[-1], sum(crossed), run
+    return np.array(times[-len(kts):]), np.array(kts), inside[-1], sum(crossed), run_finished(text)
 
 
 def built_counts():
     """The fluid and frozen particles randomEquilWall built (its log)."""
-    text = open("log.randomEquilWall").read()
-    fluid = re.search(r"^Fluid particles *: *(\d+)", text, re.M)
-    frozen = re.search(r"^Frozen particles *: *(\d+)", text, re.M)
-    if not fluid or not frozen:
+    text = read_text("log.randomEquilWall")
+    counts = [re.search(rf"^{what} particles *: *(\d+)", text, re.M) for what in ("Fluid", "Frozen")]
+    if None in counts:
         sys.exit("plotResults: log.randomEquilWall gives no particle counts")
-    return int(fluid.group(1)), int(frozen.group(1))
-
-
-def foam_vector_field(path):
-    body = open(path).read().split("internalField", 1)[1]
-    n = int(re.search(r"List<vector>\s*(\d+)", body).group(1))
-    nums = re.findall(r"[-+0-9.eE]+", body[body.index("(", body.index("List<vector>")) + 1:].replace("(", " ").replace(")", " "))
-    return np.array(nums[: 3 * n], float).reshape(n, 3)
+    return [int(m.group(1)) for m in counts]
 
 
 def foam_on_bins(xs, zs):
     """simpleFoam's U gathered into the DPD bins (mean over the fluid cells in each; NaN in solid), and
     the fraction of each bin's cells that are fluid."""
-    t = max((d for d in os.listdir("simpleFoam") if re.fullmatch(r"[0-9.eE+-]+", d) and float(d) > 0), key=float)
+    t = foam_latest_time("simpleFoam")
     C, U = foam_vector_field(f"simpleFoam/{t}/C"), foam_vector_field(f"simpleFoam/{t}/U")
     w = xs[1] - xs[0]
     i = np.floor((C[:, 0] - (xs[0] - w / 2)) / w).astype(int)
     k = np.floor((C[:, 2] - (zs[0] - w / 2)) / w).astype(int)
-    out = []
     n = np.zeros((len(zs), len(xs)))
     np.add.at(n, (k, i), 1)
+    out = []
     for comp in (0, 2):
         s = np.zeros((len(zs), len(xs)))
         np.add.at(s, (k, i), U[:, comp])
         out.append(np.where(n > 0, s / np.maximum(n, 1), np.nan))
     return out[0], out[1], n / n.max()
-
-
-def mask_solid(shape):
-    """The mask's solid pixels (row 0 = bottom), from constant/dpdProperties' geometry file."""
-    props = open("constant/dpdProperties").read()
-    path = re.search(r'file\s+"([^"]+)"', props).group(1)
-    img = plt.imread(path)
-    grey = img[..., :3].mean(axis=-1) if img.ndim == 3 else img
-    solid = (grey < 0.5)[::-1]
-    if solid.shape != shape:
-        sys.exit(f"plotResults: the mask {path} is {solid.shape}, the bins {shape}")
-    return solid, path
-
-
-def distance_to_solid(solid):
-    """Distance from each pixel centre to the nearest solid pixel's edge (0 in the solid), periodic."""
-    n0, n1 = solid.shape
-    sr, sc = np.nonzero(solid)
-    d = np.zeros(solid.shape)
-    fr, fc = np.nonzero(~solid)
-    for a in range(0, len(fr), 200):
-        dr = np.abs(fr[a:a + 200, None] - sr[None, :])
-        dc = np.abs(fc[a:a + 200, None] - sc[None, :])
-        dr, dc = np.minimum(dr, n0 - dr), np.minimum(dc, n1 - dc)
-        # to the nearest point of the solid pixel (a unit square), from the fluid pixel's centre
-        ex, ez = np.maximum(dc - 0.5, 0), np.maximum(dr - 0.5, 0)
-        d[fr[a:a + 200], fc[a:a + 200]] = np.sqrt(ex ** 2 + ez ** 2).min(axis=1)
-    return d
-
-
-def local_pore_size(dist):
-    """Local thickness of the pore space: for each fluid pixel the diameter of the largest disc inside
-    the fluid (centred on a fluid pixel, radius its distance to the solid) that covers it."""
-    n0, n1 = dist.shape
-    size = np.zeros(dist.shape)
-    rr, cc = np.mgrid[0:n0, 0:n1]
-    for r, c in zip(*np.nonzero(dist > 0)):
-        rad = dist[r, c]
-        dr = np.abs(rr - r)
-        dc = np.abs(cc - c)
-        dr, dc = np.minimum(dr, n0 - dr), np.minimum(dc, n1 - dc)
-        cover = dr * dr + dc * dc <= rad * rad
-        size[cover] = np.maximum(size[cover], 2 * rad)
-    return size
 
 
 def class_table(key, edges, ud, uf, err, rho, whole):
@@ -174,19 +119,24 @@ def class_table(key, edges, ud, uf, err, rho, whole):
     return rows
 
 
+def class_lines(name, rows):
+    return [f"{name} {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f} {r[7]:.3f}" for r in rows]
+
+
 def main():
     table = latest("postProcessing/profileBins/*/flowField.dat")
     g = read_table(table)
     xs, zs = np.unique(g["x"]), np.unique(g["z"])
     shape = (len(zs), len(xs))
     grid = {k: v.reshape(shape) for k, v in g.items()}
-    times, kts, inside, crossed, run = solver_log()
+    times, kts, inside, crossed, (steps, seconds, rate) = solver_log()
     cmp_path = latest("postProcessing/compareFVM/*/compare.dat")
     cmp, lines = read_compare(cmp_path)
-    crack = lines["crack"]
+    if not lines:
+        sys.exit("plotResults: compare.dat has no line (system/makeFoamCaseDict: lines)")
     prof = read_table(os.path.join(os.path.dirname(cmp_path), "profiles.dat"))
     twin = read_dict("simpleFoam/constant/dpdCase")   # nu and where it came from
-    sample_start = float(re.search(r"startTime\s+([0-9.eE+]+);", open("system/controlDict").read().split("flowField")[1]).group(1))
+    sample_start = float(dictionary_value("system/controlDict", "functions/flowField/startTime"))
 
     # Temperature: the bins' kT (about each bin's own flow) and the log's series (about the local flow,
     # system/Monitors); flow_kT is what a global mean would have added, for reference.
@@ -204,13 +154,13 @@ def main():
 
     # The two fields on the bins.
     ufx, ufz, fvm_fraction = foam_on_bins(xs, zs)
-    speed_dpd = np.hypot(grid["ux"], grid["uz"])
-    speed_fvm = np.hypot(ufx, ufz)
     # Maps show the bins holding at least a quarter of a full bin's particles: in bins the grains'
     # surface cuts, the few particles in the sliver of fluid carry a large, biased mean (README).
     shown = count >= 0.25 * np.median(count[count > 0])
-    speed_dpd = np.where(shown, speed_dpd, np.nan)
-    solid, mask_path = mask_solid(shape)
+    speed_dpd = np.where(shown, np.hypot(grid["ux"], grid["uz"]), np.nan)
+    # The mask at the bins' centres (the tutorial's: one pixel a bin).
+    mask, mask_path, box_lo, box_hi = case_mask()
+    solid = on_grid(mask, box_lo, box_hi, xs, zs)
     dist = distance_to_solid(solid)
     pore = local_pore_size(dist)
     compared = fluid & np.isfinite(ufx)
@@ -221,10 +171,12 @@ def main():
     noise_interior = np.sqrt(np.sum(grid["uxErr"][interior] ** 2) / np.sum(ufx[interior] ** 2))
 
     # Next to the grains: bins the grains' surface passes through (the bin is solid in part: both
-    # sides have cells there), i.e. fluid bins adjacent to a solid pixel.
+    # sides have cells there), i.e. fluid bins adjacent to a solid bin of the mask. The velocity scale:
+    # the continuum's peak along the lines (the crack's).
     near = compared & (dist < 0.75)
-    crack_rows = np.isfinite(prof["u_crack"])
-    u_peak = np.nanmax(prof["u_crack"])
+    peaks = {name: np.nanmax(prof["u_" + name]) for name in lines}
+    peak_line = max(peaks, key=peaks.get)
+    u_peak = peaks[peak_line]
     u_wall_dpd, u_wall_fvm = grid["ux"][near].mean(), ufx[near].mean()
 
     # Where they disagree: by local pore size and by distance to the solid.
@@ -249,77 +201,79 @@ def main():
     wall_bound = 0.1 * u_peak
     if test_mode:
         wall_bound = max(wall_bound, abs(u_wall_fvm) + 0.03 * u_peak) + widen * budget["wall"] * u_peak
-    noise = {"line": crack["noiseL2"], "mean": super_err, "kT": kT_log_err, "wall": wall_se / u_peak}
-    checks = [
-        (f"noise of the {name} within its budget {budget[name]:g}", bool(noise[name] <= budget[name]), f"{noise[name]:.4g}")
-        for name in ("line", "mean", "kT", "wall")
-    ] + [
-        (f"mean kT of the bins within {kT_tol:.3f} of 1", abs(kT_bins - 1) < kT_tol, f"{kT_bins:.4f}"),
-        (f"mean kT of the log's series within {kT_tol:.3f} of 1",
-         abs(kT_log - 1) < kT_tol, f"{kT_log:.4f} +- {kT_log_err:.4f}"),
-        ("no fluid particle inside the solid at the end", inside == 0, f"{inside}"),
-        (f"velocity next to the grains < {wall_bound / u_peak:.1%} of the crack's peak", abs(u_wall_dpd) < wall_bound,
-         f"{u_wall_dpd:.4f} (peak {u_peak:.4f})"),
-        ("velocity next to the grains within 3 % of the peak of simpleFoam's there",
-         abs(u_wall_dpd - u_wall_fvm) < 0.03 * u_peak + widen * budget["wall"] * u_peak,
-         f"DPD {u_wall_dpd:.4f}, simpleFoam {u_wall_fvm:.4f} over {near.sum()} bins"),
-        (f"crack centre line: relative L2 < {line_tol:.3f}", crack["L2"] < line_tol,
-         f"{crack['L2']:.4f} (noise {crack['noiseL2']:.4f}, {int(crack['points'])} bins)"),
-        (f"mean velocity over the compared bins within {mean_tol:.3f}", abs(cmp["meanVelocityRatio"] - 1) < mean_tol,
-         f"{cmp['meanVelocityRatio']:.4f}"),
-        (f"superficial velocity (permeability) within {mean_tol:.3f}", abs(ratio_super - 1) < mean_tol,
-         f"{ratio_super:.4f} +- {super_err:.4f}"),
-    ]
+    noise = {**{f"line {name}" if len(lines) > 1 else "line": line["noiseL2"] for name, line in lines.items()},
+             "mean": super_err, "kT": kT_log_err, "wall": wall_se / u_peak}
+    checks = Checks()
+    for name, value in noise.items():
+        limit = budget[name.split()[0]]
+        checks.add(f"noise of the {name} within its budget {limit:g}", value <= limit, f"{value:.4g}")
+    checks.add(f"mean kT of the bins within {kT_tol:.3f} of 1", abs(kT_bins - 1) < kT_tol, f"{kT_bins:.4f}")
+    checks.add(f"mean kT of the log's series within {kT_tol:.3f} of 1", abs(kT_log - 1) < kT_tol, f"{kT_log:.4f} +- {kT_log_err:.4f}")
+    checks.add("no fluid particle inside the solid at the end", inside == 0, f"{inside}")
+    checks.add(f"velocity next to the grains < {wall_bound / u_peak:.1%} of the {peak_line}'s peak", abs(u_wall_dpd) < wall_bound,
+               f"{u_wall_dpd:.4f} (peak {u_peak:.4f})")
+    checks.add("velocity next to the grains within 3 % of the peak of simpleFoam's there",
+               abs(u_wall_dpd - u_wall_fvm) < 0.03 * u_peak + widen * budget["wall"] * u_peak,
+               f"DPD {u_wall_dpd:.4f}, simpleFoam {u_wall_fvm:.4f} over {near.sum()} bins")
+    for name, line in lines.items():
+        checks.add(f"{name} centre line: relative L2 < {line_tol:.3f}", line["L2"] < line_tol,
+                   f"{line['L2']:.4f} (noise {line['noiseL2']:.4f}, {int(line['points'])} bins)")
+    checks.add(f"mean velocity over the compared bins within {mean_tol:.3f}", abs(cmp["meanVelocityRatio"] - 1) < mean_tol,
+               f"{cmp['meanVelocityRatio']:.4f}")
+    checks.add(f"superficial velocity (permeability) within {mean_tol:.3f}", abs(ratio_super - 1) < mean_tol,
+               f"{ratio_super:.4f} +- {super_err:.4f}")
 
-    steps, seconds, rate = int(run.group(1)), float(run.group(2)), float(run.group(3))
     # The system's kT over the whole run (the log's series about the local flow): its largest
     # deviation from the set kT, a quantity the paper reports.
     worst_kT = int(np.argmax(np.abs(kts - 1.0)))
     fluid_built, frozen_built = built_counts()
     paper = read_published("published.dat")["tables"].get("counts") if os.path.exists("published.dat") else None
-    with open("results.dat", "w") as f:
-        f.write(f"# Porous medium (docs/scenes.md scene 6){' - TEST MODE' if test_mode else ''}: {table}, {cmp_path}\n")
-        f.write(f"mask               {mask_path}  ({shape[1]} x {shape[0]} bins of 1 r_c)\n")
-        f.write(f"porosity           DPD {cmp['porosityDPD']:.4f}  simpleFoam {cmp['porosityFVM']:.4f}"
-                + (f"  published {paper['porosity'][0]:g}" if paper else "") + "\n")
-        f.write(f"particles          fluid {fluid_built}  frozen {frozen_built} (every solid particle within one cutoff"
-                f" of the fluid; {frozen_built / (fluid_built + frozen_built):.1%} of all)"
-                + (f"; published fluid {paper['fluid'][0]:.0f}, frozen {paper['frozen'][0]:.0f}"
-                   f" ({paper['frozen'][0] / (paper['fluid'][0] + paper['frozen'][0]):.1%})" if paper else "") + "\n")
-        f.write(f"nu                 {twin['nu']:.5f}  ({twin['nuSource']})\n")
-        f.write(f"runTime            {seconds:.0f} s for {steps} steps; {rate:.4g} particle-steps/s\n")
-        f.write(f"kTSeries           (" + " ".join(f"{t:g}:{k:.4f}" for t, k in zip(times, kts)) + ")\n")
-        f.write(f"kTLog              {kT_log:.5f} +- {kT_log_err:.5f}  (mean of the series from t = {sample_start:g})\n")
-        f.write(f"kTFlowPart         {flow_kT:.5f}  (flow's kinetic energy per degree of freedom, from the bins: what a global mean would add)\n")
-        f.write(f"kTBins             {kT_bins:.5f}\n")
-        f.write(f"kTMaxDeviation     {kts[worst_kT] - 1:+.5f}  (largest of the log's {len(kts)} reports over the run, at t = {times[worst_kT]:g})\n")
-        f.write(f"insideAtEnd        {inside}\ncrossedBounceLayer {crossed}  (whole run)\n")
-        f.write(f"uNextToGrains      DPD {u_wall_dpd:.5f}  simpleFoam {u_wall_fvm:.5f}  crack peak {u_peak:.4f}\n")
-        f.write(f"L2field            {cmp['L2']:.5f}  (noise {cmp['noiseL2']:.5f}; Linf {cmp['Linf']:.4f})\n")
-        f.write(f"L2interior         {l2_interior:.5f}  (noise {noise_interior:.5f}; {interior.sum()} bins whose continuum cells are all fluid)\n")
-        f.write(f"L2crack            {crack['L2']:.5f}  (noise {crack['noiseL2']:.5f}; Linf {crack['Linf']:.4f}; mean ratio {crack['meanVelocityRatio']:.4f})\n")
-        f.write(f"meanVelocityRatio  {cmp['meanVelocityRatio']:.5f}  (DPD {cmp['meanVelocityDPD']:.5f}, simpleFoam {cmp['meanVelocityFVM']:.5f})\n")
-        f.write(f"superficialVelocity DPD {cmp['superficialVelocityDPD']:.6f} +- {cmp['superficialVelocityDPDErr']:.6f}  simpleFoam {cmp['superficialVelocityFVM']:.6f}\n")
-        f.write(f"permeabilityDPD    {cmp['permeabilityDPD']:.5f} +- {cmp['permeabilityDPDErr']:.5f}\n")
-        f.write(f"permeabilityFVM    {cmp['permeabilityFVM']:.5f}\npermeabilityRatio  {ratio_super:.5f}\n")
-        f.write("# by local pore size (diameter of the largest fluid disc covering the bin): lo hi bins L2 noiseL2 meanRatio uFVMmean densityWholeBins\n")
-        for r in by_pore:
-            f.write(f"poreSize  {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f} {r[7]:.3f}\n")
-        f.write("# by distance from the bin centre to the solid: lo hi bins L2 noiseL2 meanRatio uFVMmean densityWholeBins\n")
-        for r in by_dist:
-            f.write(f"wallDistance {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f} {r[7]:.3f}\n")
-        f.write(f"worstPoreClass     {worst[0]:g}-{worst[1]:g}: L2 {worst[3]:.4f}, mean ratio {worst[5]:.4f}\n")
-        for name, ok, value in checks:
-            f.write(f"check  {'PASS' if ok else 'FAIL'}  {name}: {value}\n")
-    print(open("results.dat").read(), end="")
+    write_results("results.dat", [
+        f"# Porous medium (docs/scenes.md scene 6){' - TEST MODE' if test_mode else ''}: {table}, {cmp_path}",
+        f"mask               {mask_path}  ({shape[1]} x {shape[0]} bins of 1 r_c)",
+        f"porosity           DPD {cmp['porosityDPD']:.4f}  simpleFoam {cmp['porosityFVM']:.4f}"
+        + (f"  published {paper['porosity'][0]:g}" if paper else ""),
+        f"particles          fluid {fluid_built}  frozen {frozen_built} (every solid particle within one cutoff"
+        f" of the fluid; {frozen_built / (fluid_built + frozen_built):.1%} of all)"
+        + (f"; published fluid {paper['fluid'][0]:.0f}, frozen {paper['frozen'][0]:.0f}"
+           f" ({paper['frozen'][0] / (paper['fluid'][0] + paper['frozen'][0]):.1%})" if paper else ""),
+        f"nu                 {twin['nu']:.5f}  ({twin['nuSource']})",
+        f"runTime            {seconds:.0f} s for {steps} steps; {rate:.4g} particle-steps/s",
+        "kTSeries           (" + " ".join(f"{t:g}:{k:.4f}" for t, k in zip(times, kts)) + ")",
+        f"kTLog              {kT_log:.5f} +- {kT_log_err:.5f}  (mean of the series from t = {sample_start:g})",
+        f"kTFlowPart         {flow_kT:.5f}  (flow's kinetic energy per degree of freedom, from the bins: what a global mean would add)",
+        f"kTBins             {kT_bins:.5f}",
+        f"kTMaxDeviation     {kts[worst_kT] - 1:+.5f}  (largest of the log's {len(kts)} reports over the run, at t = {times[worst_kT]:g})",
+        f"insideAtEnd        {inside}\ncrossedBounceLayer {crossed}  (whole run)",
+        f"uNextToGrains      DPD {u_wall_dpd:.5f}  simpleFoam {u_wall_fvm:.5f}  {peak_line} peak {u_peak:.4f}",
+        f"L2field            {cmp['L2']:.5f}  (noise {cmp['noiseL2']:.5f}; Linf {cmp['Linf']:.4f})",
+        f"L2interior         {l2_interior:.5f}  (noise {noise_interior:.5f}; {interior.sum()} bins whose continuum cells are all fluid)"]
+        + [f"{'L2' + name:<18} {line['L2']:.5f}  (noise {line['noiseL2']:.5f}; Linf {line['Linf']:.4f}; mean ratio "
+           f"{line['meanVelocityRatio']:.4f})" for name, line in lines.items()] + [
+        f"meanVelocityRatio  {cmp['meanVelocityRatio']:.5f}  (DPD {cmp['meanVelocityDPD']:.5f}, simpleFoam {cmp['meanVelocityFVM']:.5f})",
+        f"superficialVelocity DPD {cmp['superficialVelocityDPD']:.6f} +- {cmp['superficialVelocityDPDErr']:.6f}  "
+        f"simpleFoam {cmp['superficialVelocityFVM']:.6f}",
+        f"permeabilityDPD    {cmp['permeabilityDPD']:.5f} +- {cmp['permeabilityDPDErr']:.5f}",
+        f"permeabilityFVM    {cmp['permeabilityFVM']:.5f}\npermeabilityRatio  {ratio_super:.5f}",
+        "# by local pore size (diameter of the largest fluid disc covering the bin): lo hi bins L2 noiseL2 meanRatio uFVMmean densityWholeBins"]
+        + class_lines("poreSize ", by_pore)
+        + ["# by distance from the bin centre to the solid: lo hi bins L2 noiseL2 meanRatio uFVMmean densityWholeBins"]
+        + class_lines("wallDistance", by_dist)
+        + [f"worstPoreClass     {worst[0]:g}-{worst[1]:g}: L2 {worst[3]:.4f}, mean ratio {worst[5]:.4f}"], checks)
 
     ext = [xs[0] - 0.5, xs[-1] + 0.5, zs[0] - 0.5, zs[-1] + 0.5]
+    plot_fields(grid, speed_dpd, ufx, xs, zs, times, kts, flow_kT, kT_bins, sample_start, inside, ext, os.path.dirname(table))
+    plot_comparison(grid, speed_dpd, np.hypot(ufx, ufz), ufx, compared & shown, cmp, lines, prof, twin, l2_interior, ext)
+    print("Written porousMedium.png, compareFVM.png and results.dat")
+    return checks.status()
+
+
+def plot_fields(grid, speed_dpd, ufx, xs, zs, times, kts, flow_kT, kT_bins, sample_start, inside, ext, directory):
     fig, ax = plt.subplots(2, 2, figsize=(13, 11))
     im = ax[0, 0].imshow(speed_dpd, origin="lower", extent=ext, cmap="viridis")
     fig.colorbar(im, ax=ax[0, 0], label="|u|")
     ax[0, 0].set_title("DPD |u| (flowField.vti)")
-    dens = np.where(count > 0, grid["density"], np.nan)
-    im = ax[0, 1].imshow(dens, origin="lower", extent=ext, cmap="magma")
+    im = ax[0, 1].imshow(np.where(grid["count"] > 0, grid["density"], np.nan), origin="lower", extent=ext, cmap="magma")
     fig.colorbar(im, ax=ax[0, 1], label="number density")
     ax[0, 1].set_title("DPD density")
     ax[1, 0].plot(times, kts, "o-", ms=3, label="log: kT about the local flow")
@@ -327,48 +281,40 @@ def main():
     ax[1, 0].axhline(kT_bins, color="r", ls="--", label=f"bins (about local flow): {kT_bins:.4f}")
     ax[1, 0].axhline(1, color="k", lw=0.8)
     ax[1, 0].axvline(sample_start, color="k", ls=":", lw=0.8)
-    ax[1, 0].set_xlabel("time")
-    ax[1, 0].set_ylabel("kT")
-    ax[1, 0].legend(fontsize=8)
-    ax[1, 0].set_title(f"kT series; {inside} particles inside the solid at the end")
-    for path in sorted(os.listdir(os.path.dirname(table))):
-        m = re.fullmatch(r"flowField_x(.*)\.dat", path)
-        if not m:
-            continue
-        s = read_table(os.path.join(os.path.dirname(table), path))
-        col = int(np.argmin(np.abs(xs - float(m.group(1)))))
+    label(ax[1, 0], f"kT series; {inside} particles inside the solid at the end", "time", "kT", legend=8)
+    # The sections of system/controlDict (the tutorial's: the crack at its narrowest and widest).
+    for x, s in read_sections(directory, "flowField"):
+        col = int(np.argmin(np.abs(xs - x)))
         ok = s["count"] >= 10
-        line = ax[1, 1].errorbar(s["z"][ok], s["ux"][ok], yerr=s["uxErr"][ok], fmt="o", ms=2, label=f"DPD x = {m.group(1)}")
-        ax[1, 1].plot(zs, ufx[:, col], "-", color=line[0].get_color(), lw=1, label=f"simpleFoam x = {m.group(1)}")
-    ax[1, 1].set_xlabel("z")
-    ax[1, 1].set_ylabel("ux")
-    ax[1, 1].legend(fontsize=8)
-    ax[1, 1].set_title("across the crack, narrowest and widest")
-    fig.tight_layout()
-    fig.savefig("porousMedium.png", dpi=110)
+        line = ax[1, 1].errorbar(s["z"][ok], s["ux"][ok], yerr=s["uxErr"][ok], fmt="o", ms=2, label=f"DPD x = {x:g}")
+        ax[1, 1].plot(zs, ufx[:, col], "-", color=line[0].get_color(), lw=1, label=f"simpleFoam x = {x:g}")
+    label(ax[1, 1], "across the flow at the sections of system/controlDict", "z", "ux", legend=8)
+    save(fig, "porousMedium.png")
 
+
+def plot_comparison(grid, speed_dpd, speed_fvm, ufx, shown, cmp, lines, prof, twin, l2_interior, ext):
     fig, ax = plt.subplots(2, 2, figsize=(13, 11))
     vmax = np.nanmax(speed_fvm)
     for a, field, title in ((ax[0, 0], speed_dpd, "DPD |u|"), (ax[0, 1], speed_fvm, "simpleFoam |u| (on the DPD bins)")):
         im = a.imshow(field, origin="lower", extent=ext, cmap="viridis", vmin=0, vmax=vmax)
         fig.colorbar(im, ax=a, label="|u|")
         a.set_title(title)
-    diff = np.where(compared & shown, grid["ux"] - ufx, np.nan)
+    diff = np.where(shown, grid["ux"] - ufx, np.nan)
     lim = np.nanpercentile(np.abs(diff), 99)
     im = ax[1, 0].imshow(diff, origin="lower", extent=ext, cmap="RdBu_r", vmin=-lim, vmax=lim)
     fig.colorbar(im, ax=ax[1, 0], label="ux DPD - ux simpleFoam")
     ax[1, 0].set_title(f"difference: L2 field {cmp['L2']:.3f}, interior {l2_interior:.3f}", fontsize=10)
-    on = crack_rows
-    ax[1, 1].errorbar(prof["x"][on], prof["uDPD"][on], yerr=prof["uDPDErr"][on], fmt="o", ms=2, label="DPD (bins on the line)")
-    ax[1, 1].plot(prof["x"][on], prof["u_crack"][on], "r-", lw=1.2, label=f"simpleFoam, nu = {twin['nu']:.4f}")
-    ax[1, 1].set_xlabel("x")
-    ax[1, 1].set_ylabel("ux on the crack's centre line")
-    ax[1, 1].legend(fontsize=8)
-    ax[1, 1].set_title(f"crack centre line: L2 {crack['L2']:.4f}; k DPD/FVM {ratio_super:.3f}")
-    fig.tight_layout()
-    fig.savefig("compareFVM.png", dpi=110)
-    print("Written porousMedium.png, compareFVM.png and results.dat")
-    return 0 if all(ok for _, ok, _ in checks) else 1
+    # Each line of system/makeFoamCaseDict: the bins on it (profiles.dat: x z uDPD uDPDErr uFVM u_<line>).
+    for name in lines:
+        on = np.isfinite(prof["u_" + name])
+        along = "x" if np.ptp(prof["x"][on]) >= np.ptp(prof["z"][on]) else "z"
+        dots = ax[1, 1].errorbar(prof[along][on], prof["uDPD"][on], yerr=prof["uDPDErr"][on], fmt="o", ms=2,
+                                 label=f"DPD (bins on the line {name}, {on.sum()})")
+        ax[1, 1].plot(prof[along][on], prof["u_" + name][on], "-", color=dots[0].get_color(), lw=1.2,
+                      label=f"simpleFoam, nu = {twin['nu']:.4f}")
+    label(ax[1, 1], "lines of system/makeFoamCaseDict: " + "; ".join(f"{n} L2 {line['L2']:.4f}" for n, line in lines.items())
+          + f"; k DPD/FVM {cmp['permeabilityRatio']:.3f}", "position along the line", "ux", legend=8)
+    save(fig, "compareFVM.png")
 
 
 if __name__ == "__main__":

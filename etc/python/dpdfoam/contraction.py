@@ -1,8 +1,8 @@
 """The contraction tutorials (docs/scenes.md scene 7: tutorials/contraction/squareContraction and
 rampContraction): picture, results table and the checks of what the scene must show, the same for
-every shape. A tutorial's plotResults.py calls main(title, test_mode, chains) in the tutorial
-directory: the scene is the case there, the -chains variant (FENE chains in the flow) the copy in
-chains/.
+every shape. A tutorial's plotResults.py calls main(title, arguments) in the tutorial directory: the
+scene is the case there, the -chains variant (FENE chains in the flow) the copy in chains/ (with
+-lowG, chainsLowG/).
 
 Reads the 2-D fields and the sections profileBins wrote (postProcessing/profileBins/<time>/), and
 the solver's log; draws the velocity map and, at each section, velocity, density and temperature
@@ -26,52 +26,34 @@ at the start (0/) and in the latest snapshot; it writes resultsChains.dat and co
 and checks that the latest snapshot still holds every bead and bond insertChains made (chains x
 length beads, chains x (length - 1) bonds) and that the longest bond the log reports stays below
 r_max.
-Every check is written so that a NaN fails it.
+Every check fails on a NaN (dpdfoam.checks).
 """
-import glob
 import math
 import os
 import re
 import sys
 
-import h5py
-import matplotlib
+import numpy as np
+from matplotlib.collections import LineCollection
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.collections import LineCollection  # noqa: E402
+from .checks import Checks, print_file
+from .io import header_means, latest, latest_dir, log_values, read_columns, read_dict, read_sections, read_table, read_text
+from .plots import draw_map, label, plt, save
+from .snapshots import chain_segments
 
-from dpdResults import latest, read_dict, read_table  # noqa: E402
-
-
-def latest_dir(case="."):
-    """The latest time directory profileBins wrote."""
-    dirs = glob.glob(os.path.join(case, "postProcessing/profileBins/*"))
-    if not dirs:
-        sys.exit(f"plotResults: no {case}/postProcessing/profileBins/<time>")
-    return max(dirs, key=lambda p: float(os.path.basename(p)))
+SECTION_COLUMNS = "x flux fluxErr uxMax density kT uxMean uxMin reversedWidth reversedFlux"
+FLUID_BIN = 10  # particle-samples in a bin the fluid fills
 
 
 def solver_log(case="."):
-    with open(os.path.join(case, "log.dpdFoamLike")) as f:
-        text = f.read()
-    inside = [int(v) for v in re.findall(r"inside walls now (\d+)", text)]
-    kts = [float(v) for v in re.findall(r"kT = ([-0-9.eE+]+)", text)]
+    """The particles inside the solid at the end, the kT series and the bounce layer's (returned, crossed)."""
+    text = read_text(os.path.join(case, "log.dpdFoamLike"))
+    inside = log_values(text, r"inside walls now (\d+)", int)
+    kts = log_values(text, r"kT = ([-0-9.eE+]+)")
     layer = re.findall(r"geometry returned (\d+) crossed (\d+);", text)
     if not inside or not kts:
         sys.exit("plotResults: log.dpdFoamLike has no report")
     return inside[-1], kts, [(int(a), int(b)) for a, b in layer]
-
-
-def read_sections(d, name):
-    """The sections profileBins wrote for the function object `name`: [(x, table)] along x."""
-    paths = glob.glob(os.path.join(d, f"{name}_x*.dat"))
-    positions = [float(re.search(r"_x(.*)\.dat$", p).group(1)) for p in paths]
-    return sorted(((x, read_table(p)) for x, p in zip(positions, paths)), key=lambda item: item[0])
-
-
-SECTION_COLUMNS = "x flux fluxErr uxMax density kT uxMean uxMin reversedWidth reversedFlux"
 
 
 def section_row(x, s):
@@ -82,7 +64,7 @@ def section_row(x, s):
     dz = s["z"][1] - s["z"][0]
     flux = np.sum(s["density"] * s["ux"]) * dz
     flux_err = math.sqrt(np.sum((s["density"] * s["uxErr"]) ** 2 + (s["ux"] * s["densityErr"]) ** 2)) * dz
-    fluid = s["count"] >= 10
+    fluid = s["count"] >= FLUID_BIN
     ux, weight = s["ux"][fluid], s["count"][fluid]
     reversed_bins = ux < -2.0 * s["uxErr"][fluid]
     return (x, flux, flux_err, np.max(s["ux"]), np.mean(s["density"][fluid]),
@@ -96,113 +78,95 @@ def upstream_difference(sections):
     over the bins both sections fill, and its noise, the RMS of their combined standard errors (a
     difference at the noise is no difference)."""
     (x1, a), (x2, b) = sections[0], sections[1]
-    both = (a["count"] >= 10) & (b["count"] >= 10)
+    both = (a["count"] >= FLUID_BIN) & (b["count"] >= FLUID_BIN)
     diff = b["ux"][both] - a["ux"][both]
     noise = np.hypot(a["uxErr"][both], b["uxErr"][both])
     return x1, x2, float(np.sqrt(np.mean(diff ** 2))), float(np.sqrt(np.mean(noise ** 2)))
 
 
-def draw_map(fig, ax, grid, column, title, cmap="viridis"):
-    xs, zs = np.unique(grid["x"]), np.unique(grid["z"])
-    im = ax.imshow(grid[column].reshape(len(zs), len(xs)), origin="lower", extent=[xs[0], xs[-1], zs[0], zs[-1]],
-                   aspect="equal", cmap=cmap)
-    fig.colorbar(im, ax=ax, label=column)
-    ax.set_title(title)
-
-
 def draw_sections(ax_ux, ax_rho, ax_kT, sections):
     for x, s in sections:
-        fluid = s["count"] >= 10
+        fluid = s["count"] >= FLUID_BIN
         ax_ux.plot(s["z"], s["ux"], label=f"x = {x:g}")
         ax_rho.plot(s["z"], s["density"], label=f"x = {x:g}")
         ax_kT.plot(s["z"][fluid], s["kT"][fluid], label=f"x = {x:g}")
     for ax, name in ((ax_ux, "ux"), (ax_rho, "density"), (ax_kT, "kT")):
-        ax.set_xlabel("z")
-        ax.set_ylabel(name)
-        ax.legend(fontsize=8)
+        label(ax, None, "z", name, legend=8)
     ax_ux.set_title("velocity across the channel at the sections")
 
 
-def flow_failures(rows, mean_kT, inside, test_mode, inside_what):
-    """The scene's checks (module docstring); each written so that a NaN fails it."""
-    failures = []
-    if inside != 0:
-        failures.append(f"{inside} {inside_what} inside the solid at the end")
-    if not abs(mean_kT - 1.0) <= 0.03:
-        failures.append(f"mean kT {mean_kT:.4f} differs from 1 by more than 3 %")
+def flow_checks(checks, rows, mean_kT, inside, test_mode, inside_what):
+    """The scene's checks (module docstring), each named by what a failure means."""
+    checks.add(f"{inside} {inside_what} inside the solid at the end", inside == 0)
+    checks.add(f"mean kT {mean_kT:.4f} differs from 1 by more than 3 %", abs(mean_kT - 1.0) <= 0.03)
     fluxes = np.array([r[1] for r in rows])
     errors = np.array([r[2] for r in rows])
     mean_flux = np.mean(fluxes)
     budget = 0.05 if test_mode else 0.005
     allowed = 5 * budget * abs(mean_flux)
-    if not np.all(errors <= budget * abs(mean_flux)):
-        failures.append(f"a section's flux is too noisy to decide: standard errors {errors} against the budget "
-                        f"{budget:.1%} of the mean flux {mean_flux:.4g}")
-    if not np.all(np.abs(fluxes - mean_flux) <= allowed):
-        failures.append(f"the flux differs between sections: {fluxes} (allowed deviation {allowed:.4g})")
-    if not mean_flux > 0:
-        failures.append(f"no flow along the body force: mean flux {mean_flux}")
-    return failures
+    checks.add(f"a section's flux is too noisy to decide: standard errors {errors} against the budget "
+               f"{budget:.1%} of the mean flux {mean_flux:.4g}", np.all(errors <= budget * abs(mean_flux)))
+    checks.add(f"the flux differs between sections: {fluxes} (allowed deviation {allowed:.4g})",
+               np.all(np.abs(fluxes - mean_flux) <= allowed))
+    checks.add(f"no flow along the body force: mean flux {mean_flux}", mean_flux > 0)
 
 
-def write_flow_table(f, rows, mean_kT, inside, layer, extra_columns="", extra=None, inside_what="fluid particles",
-                     upstream=None):
+def write_flow_table(f, flow, extra_columns="", extra=None, inside_what="fluid particles"):
+    rows, mean_kT, inside, layer, upstream = flow
     f.write(f"# {SECTION_COLUMNS}{extra_columns}   (flux = integral of rho ux dz at the section; reversed: the "
             "fluid bins with ux below 0 by more than 2 standard errors, their width and flux)\n")
     for k, r in enumerate(rows):
         values = list(r) + (list(extra[k]) if extra else [])
         f.write(" ".join(f"{v:.6g}" for v in values) + "\n")
     f.write(f"# mean kT {mean_kT:.5f}; {inside_what} inside the solid at the end {inside}\n")
-    if upstream is not None:
-        f.write(f"# ux at x = {upstream[1]:g} against x = {upstream[0]:g}: RMS difference {upstream[2]:.5f}, "
-                f"its noise {upstream[3]:.5f}\n")
+    f.write(f"# ux at x = {upstream[1]:g} against x = {upstream[0]:g}: RMS difference {upstream[2]:.5f}, "
+            f"its noise {upstream[3]:.5f}\n")
     if layer:
-        returned = sum(a for a, _ in layer)
-        crossed = sum(b for _, b in layer)
-        f.write(f"# bounce layer: {returned} returned, {crossed} still crossed the surface\n")
+        f.write(f"# bounce layer: {sum(a for a, _ in layer)} returned, {sum(b for _, b in layer)} still crossed the surface\n")
 
 
-def report(table, failures):
-    with open(table) as f:
-        print(f.read(), end="")
-    for msg in failures:
-        print("CHECK FAILED:", msg)
-    if failures:
+def report(table, checks):
+    """The table as written, then the failed checks; exits 1 when one failed."""
+    print_file(table)
+    checks.print_failures()
+    if checks.failures():
         sys.exit(1)
-    print("All checks passed.")
 
 
 def flow_summary(case):
-    """What both the scene and the variant read: the grid, its sections, the log and the rows."""
-    d = latest_dir(case)
+    """What both the scene and the variant read: the grid, its sections and (rows, mean kT, inside,
+    the bounce layer's counts, the upstream difference)."""
+    d = latest_dir(os.path.join(case, "postProcessing/profileBins/*"))
     grid = read_table(os.path.join(d, "flowField.dat"))
     sections = read_sections(d, "flowField")
     if len(sections) != 5:
         sys.exit(f"plotResults: expected 5 sections in {d}, found {len(sections)}")
-    inside, kts, layer = solver_log(case)
+    inside, _, layer = solver_log(case)
     # The mean kT of the fluid, weighted by the particle-samples of each bin (bins with a few
     # particles at the walls carry little weight).
-    full = grid["count"] >= 10
+    full = grid["count"] >= FLUID_BIN
     mean_kT = np.sum(grid["kT"][full] * grid["count"][full]) / np.sum(grid["count"][full])
     rows = [section_row(x, s) for x, s in sections]
-    return d, grid, sections, inside, layer, mean_kT, rows
+    return d, grid, sections, (rows, mean_kT, inside, layer, upstream_difference(sections))
 
 
-def main(title, test_mode, chains=False, low_g=False):
-    if chains:
-        main_chains(title, test_mode, "chainsLowG" if low_g else "chains")
+def main(title, arguments):
+    """The scene in the tutorial directory, or with -chains its variant (-lowG: the low-g one)."""
+    test_mode = "-test" in arguments
+    if "-chains" in arguments:
+        main_chains(title, test_mode, "chainsLowG" if "-lowG" in arguments else "chains")
         return
-    d, grid, sections, inside, layer, mean_kT, rows = flow_summary(".")
+    _, grid, sections, flow = flow_summary(".")
     fig, axes = plt.subplots(2, 2, figsize=(12, 8))
     draw_map(fig, axes[0, 0], grid, "ux", "ux on the x-z grid (flowField.vti)")
     draw_sections(axes[0, 1], axes[1, 0], axes[1, 1], sections)
     fig.suptitle(title + (" - test mode" if test_mode else ""))
-    fig.tight_layout()
-    fig.savefig("contraction.png", dpi=110)
-
+    save(fig, "contraction.png")
     with open("results.dat", "w") as f:
-        write_flow_table(f, rows, mean_kT, inside, layer, upstream=upstream_difference(sections))
-    report("results.dat", flow_failures(rows, mean_kT, inside, test_mode, "fluid particles"))
+        write_flow_table(f, flow)
+    checks = Checks()
+    flow_checks(checks, *flow[:3], test_mode, "fluid particles")
+    report("results.dat", checks)
 
 
 # ---- The -chains variant ----------------------------------------------------------------------------
@@ -211,25 +175,10 @@ def main(title, test_mode, chains=False, low_g=False):
 def bead_row(x, beads, fluid):
     """The beads at one section: their mean density over the bins the fluid fills, and their flux."""
     dz = beads["z"][1] - beads["z"][0]
-    filled = fluid["count"] >= 10
+    filled = fluid["count"] >= FLUID_BIN
     # Bins no bead visited have no bead velocity (NaN) and no beads: they carry no bead flux.
     flux = np.sum(np.where(beads["count"] > 0, beads["density"] * beads["ux"], 0.0)) * dz
     return np.mean(beads["density"][filled]), flux
-
-
-def chain_bins(case):
-    """chainBins.dat of the latest chainStatistics write: {column: array} by chain centre along x."""
-    path = latest(os.path.join(case, "postProcessing/chains/*/chainBins.dat"))
-    data = np.loadtxt(path, comments="#", ndmin=2)
-    return {"x": data[:, 0], "samples": data[:, 1], "Rg2": data[:, 2], "span": data[:, 3], "Rx2": data[:, 4]}
-
-
-def chain_means(case):
-    """The means over the sampling in chainStatistics.dat's header: {name: (mean, error)}."""
-    path = latest(os.path.join(case, "postProcessing/chains/*/chainStatistics.dat"))
-    with open(path) as f:
-        text = f.read()
-    return {k: (float(m), float(e)) for k, m, e in re.findall(r"# mean (\S+)\s+(\S+) \+- (\S+)", text)}
 
 
 def chain_bin_row(bins, x):
@@ -240,31 +189,9 @@ def chain_bin_row(bins, x):
     return bins["samples"][k], bins["Rg2"][k], bins["span"][k], math.sqrt(bins["Rx2"][k])
 
 
-def snapshot_chains(case, time_dir=None):
-    """A snapshot's beads and bonds (the latest, or that of time_dir, e.g. "0"): bead positions, and
-    each bond as the segment from its first bead along its followed vector (drawn without jumps across
-    the periodic box)."""
-    path = (os.path.join(case, time_dir, "particles.h5") if time_dir is not None
-            else latest(os.path.join(case, "[0-9]*/particles.h5")))
-    with h5py.File(path, "r") as f:
-        names = [n.decode() if isinstance(n, bytes) else str(n) for n in f.attrs["speciesNames"]]
-        species = np.array(f["particles/species"])
-        position = np.array(f["particles/position"])
-        ids = np.array(f["particles/id"])
-        pairs = np.array(f["bonds/pairs"]) if "bonds/pairs" in f else np.zeros((0, 2), dtype=np.uint64)
-        vector = np.array(f["bonds/vector"]) if "bonds/vector" in f else np.zeros((0, 3))
-        chain = np.array(f["bonds/chain"]) if "bonds/chain" in f else np.zeros(0, dtype=int)
-        time = float(f.attrs["time"])
-    beads = position[species == names.index("polymer")] if "polymer" in names else np.zeros((0, 3))
-    index = {int(i): k for k, i in enumerate(ids)}
-    starts = np.array([position[index[int(a)]] for a, _ in pairs]).reshape(-1, 3)
-    return {"path": path, "time": time, "beads": beads, "starts": starts, "ends": starts + vector, "chain": chain}
-
-
 def longest_bond(case):
     """The longest bond of any report in the solver's log, and r_max."""
-    with open(os.path.join(case, "log.dpdFoamLike")) as f:
-        found = re.findall(r"bonds: longest ([-0-9.eE+naifNAIF]+) of rMax ([0-9.eE+]+)", f.read())
+    found = re.findall(r"bonds: longest ([-0-9.eE+naifNAIF]+) of rMax ([0-9.eE+]+)", read_text(os.path.join(case, "log.dpdFoamLike")))
     if not found:
         return float("nan"), float("nan")
     return max(float(a) for a, _ in found), float(found[-1][1])
@@ -276,21 +203,15 @@ def draw_chain_bins(ax, bins, sections):
     ax.plot(bins["x"], np.sqrt(bins["Rx2"]), "^-", label="rms end-to-end along x")
     for x, _ in sections:
         ax.axvline(x, color="grey", lw=0.8, ls="--")
-    ax.set_xlabel("x of the chain's centre (sections dashed)")
-    ax.set_ylabel("length")
-    ax.set_title("chain size and extension along the flow")
-    ax.legend(fontsize=8)
+    label(ax, "chain size and extension along the flow", "x of the chain's centre (sections dashed)", "length", legend=8)
 
 
 def draw_snapshot(ax, grid, snap):
     # The solid in grey (the bins no mobile particle visited), so that the chains stand out.
     xs, zs = np.unique(grid["x"]), np.unique(grid["z"])
     solid = (grid["count"] == 0).reshape(len(zs), len(xs))
-    ax.imshow(solid, origin="lower", extent=[xs[0], xs[-1], zs[0], zs[-1]], aspect="equal",
-              cmap="Greys", vmin=0, vmax=2.5)
-    ax.set_title(f"chains at t = {snap['time']:g} (solid grey)")
-    ax.set_xlabel("x")
-    ax.set_ylabel("z")
+    ax.imshow(solid, origin="lower", extent=[xs[0], xs[-1], zs[0], zs[-1]], aspect="equal", cmap="Greys", vmin=0, vmax=2.5)
+    label(ax, f"chains at t = {snap['time']:g} (solid grey)", "x", "z")
     colours = plt.cm.tab20(np.mod(snap["chain"], 20))
     segments = np.stack([snap["starts"][:, [0, 2]], snap["ends"][:, [0, 2]]], axis=1)
     ax.add_collection(LineCollection(segments, colors=colours, linewidths=1.0))
@@ -300,32 +221,25 @@ def draw_snapshot(ax, grid, snap):
 def draw_bead_sections(ax, bead_sections):
     for x, s in bead_sections:
         ax.plot(s["z"], s["density"], label=f"x = {x:g}")
-    ax.set_xlabel("z")
-    ax.set_ylabel("bead density")
-    ax.set_title("bead density across the channel at the sections")
-    ax.legend(fontsize=8)
+    label(ax, "bead density across the channel at the sections", "z", "bead density", legend=8)
 
 
-def chain_failures(inserted, snap, bond):
+def chain_checks(checks, inserted, snap, bond):
     """The variant's own checks: every bead and bond insertChains made is still there, and no bond
     reached r_max (the run stops if one does: this reads what the log says)."""
     chains, length = inserted
-    failures = []
-    if not len(snap["beads"]) == chains * length:
-        failures.append(f"{len(snap['beads'])} beads in {snap['path']}, insertChains made {chains * length}")
-    if not len(snap["starts"]) == chains * (length - 1):
-        failures.append(f"{len(snap['starts'])} bonds in {snap['path']}, insertChains made {chains * (length - 1)}")
-    if not bond[0] < bond[1]:
-        failures.append(f"longest bond {bond[0]} against r_max {bond[1]} (log.dpdFoamLike)")
-    return failures
+    checks.add(f"{len(snap['beads'])} beads in {snap['path']}, insertChains made {chains * length}",
+               len(snap["beads"]) == chains * length)
+    checks.add(f"{len(snap['starts'])} bonds in {snap['path']}, insertChains made {chains * (length - 1)}",
+               len(snap["starts"]) == chains * (length - 1))
+    checks.add(f"longest bond {bond[0]} against r_max {bond[1]} (log.dpdFoamLike)", bond[0] < bond[1])
 
 
 def write_chain_table(path, flow, extra, inserted, snap, bond, means):
     """resultsChains.dat: the scene's table with the beads' and chains' columns, and the chains' summary."""
-    rows, mean_kT, inside, layer, upstream = flow
     with open(path, "w") as f:
-        write_flow_table(f, rows, mean_kT, inside, layer, " beadDensity beadFlux chainSamples Rg2 spanX RxRms", extra,
-                         "mobile particles (fluid and beads)", upstream)
+        write_flow_table(f, flow, " beadDensity beadFlux chainSamples Rg2 spanX RxRms", extra,
+                         "mobile particles (fluid and beads)")
         f.write("# bead columns: the beads alone at the section; chain columns: the chains whose centres lie in\n"
                 "# the x bin of chainStatistics holding the section (R_g^2, span along x, rms end-to-end along x)\n")
         f.write(f"# chains {inserted[0]} of {inserted[1]} beads; latest snapshot {len(snap['beads'])} beads, "
@@ -334,19 +248,17 @@ def write_chain_table(path, flow, extra, inserted, snap, bond, means):
 
 
 def main_chains(title, test_mode, case="chains"):
-    d, grid, sections, inside, layer, mean_kT, rows = flow_summary(case)
+    d, grid, sections, flow = flow_summary(case)
     bead_grid = read_table(os.path.join(d, "beadField.dat"))
     bead_sections = read_sections(d, "beadField")
     if [x for x, _ in bead_sections] != [x for x, _ in sections]:
         sys.exit(f"plotResults: beadField's sections in {d} are not flowField's")
-    bins = chain_bins(case)
-    snap = snapshot_chains(case)
-    bond = longest_bond(case)
+    bins = read_columns(latest(os.path.join(case, "postProcessing/chains/*/chainBins.dat")), ("x", "samples", "Rg2", "span", "Rx2"))
+    snap, bond = chain_segments(latest(os.path.join(case, "[0-9]*/particles.h5"))), longest_bond(case)
     inserted = read_dict(os.path.join(case, "system/insertChainsDict"))
     inserted = (int(inserted["chains"]), int(inserted["length"]))
     extra = [bead_row(x, b, s) + chain_bin_row(bins, x) for (x, b), (_, s) in zip(bead_sections, sections)]
 
-    start = snapshot_chains(case, "0")
     fig, axes = plt.subplots(5, 2, figsize=(13, 18.5))
     draw_map(fig, axes[0, 0], grid, "ux", "ux of fluid and beads on the x-z grid (flowField.vti)")
     draw_map(fig, axes[0, 1], bead_grid, "density", "bead density on the x-z grid (beadField.vti)", cmap="magma")
@@ -354,17 +266,17 @@ def main_chains(title, test_mode, case="chains"):
     draw_bead_sections(axes[2, 1], bead_sections)
     draw_chain_bins(axes[3, 0], bins, sections)
     draw_snapshot(axes[3, 1], grid, snap)
-    draw_snapshot(axes[4, 0], grid, start)
+    draw_snapshot(axes[4, 0], grid, chain_segments(os.path.join(case, "0", "particles.h5")))
     axes[4, 1].axis("off")
     # chains/ gives resultsChains.dat and contractionChains.png, chainsLowG/ the same names with LowG.
     suffix = case[0].upper() + case[1:]
-    with open(os.path.join(case, "constant/dpdProperties")) as f:
-        g = re.search(r"bodyForce\s*\{[^}]*value\s+\(\s*(\S+)", f.read()).group(1)
+    g = re.search(r"bodyForce\s*\{[^}]*value\s+\(\s*(\S+)", read_text(os.path.join(case, "constant/dpdProperties"))).group(1)
     fig.suptitle(f"{title}, {inserted[0]} FENE chains of {inserted[1]} beads, g {g}" + (" - test mode" if test_mode else ""))
-    fig.tight_layout()
-    fig.savefig(f"contraction{suffix}.png", dpi=100)
+    save(fig, f"contraction{suffix}.png", dpi=100)
 
-    flow = (rows, mean_kT, inside, layer, upstream_difference(sections))
-    write_chain_table(f"results{suffix}.dat", flow, extra, inserted, snap, bond, chain_means(case))
-    failures = flow_failures(rows, mean_kT, inside, test_mode, "mobile particles (fluid or beads)")
-    report(f"results{suffix}.dat", failures + chain_failures(inserted, snap, bond))
+    means = header_means(latest(os.path.join(case, "postProcessing/chains/*/chainStatistics.dat")))
+    write_chain_table(f"results{suffix}.dat", flow, extra, inserted, snap, bond, means)
+    checks = Checks()
+    flow_checks(checks, *flow[:3], test_mode, "mobile particles (fluid or beads)")
+    chain_checks(checks, inserted, snap, bond)
+    report(f"results{suffix}.dat", checks)

@@ -1,0 +1,27 @@
+"""dpdfoam: the toolkit's post-processing in Python, shared by the tutorials' plotResults.py scripts.
+
+On PYTHONPATH from etc/bashrc (etc/python), so a script imports it without path hacks:
+
+    from dpdfoam.io import latest, read_table
+    from dpdfoam.checks import Checks
+
+Modules:
+    io          reading what the tools write: profile tables, fit.dat and other dictionaries, runSweep's
+                tables, sampled blocks, logs, OpenFOAM fields
+    stats       means and standard errors, Student-t quantiles, Welch-Satterthwaite, jackknife
+    blocks      a profile's sampled blocks joined into super-blocks (errors of slow flows)
+    channel     channel flows: the no-slip Poiseuille profile, kT against the shear rate, the slip of
+                the two walls
+    checks      the checks' bookkeeping: pass / fail / information, a NaN or missing value fails
+    published   a tutorial's published.dat and the comparison with the paper's tables
+    plots       the figures' common parts (Agg backend)
+    snapshots   the solver's snapshots: the box, the same particles, the chains' bonds
+    mask        an image mask's regions: solid on the bins, distance to it, pore size, an open band
+    contraction the contraction tutorials' scene (tutorials/contraction/*)
+    pair_temperature  a bulk's kT split into heat and shared motion (etc/pairTemperature.py)
+
+The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip): the
+package reads their results. Two fits remain in Python until a tool gives them: channel.poiseuille_fit
+repeats fitSlipLength's parabola on leave-one-out super-block profiles, for a jackknife error that
+fitSlipLength does not yet give, and tutorials/polymer/scaling fits its power law R_g^2 ~ N^(2 nu).
+"""

@@ -1,0 +1,86 @@
+"""The checks' bookkeeping: each check a name, a verdict (PASS, FAIL or info) and the measured value as
+text; a check whose numbers hold a NaN or a missing value (None) fails whatever its comparison says.
+
+    checks = Checks()
+    checks.add("nu within 3 %", abs(rel) < 0.03, f"{100 * rel:+.2f} %", rel)
+    checks.write(f)                  # 'check  PASS  nu within 3 %: +0.41 %' lines
+    return checks.status()           # the script's exit status: 1 when a check failed
+"""
+import math
+import sys
+
+
+def finite(value):
+    """Whether a number (or each of a sequence) is there and finite."""
+    if value is None:
+        return False
+    if isinstance(value, (list, tuple)):
+        return all(finite(v) for v in value)
+    try:
+        return math.isfinite(float(value))
+    except (TypeError, ValueError):
+        return False
+
+
+class Checks:
+    def __init__(self):
+        self.rows = []  # (name, verdict, value text)
+
+    def add(self, name, passed, value="", *numbers):
+        """A check: PASS when passed is true and every one of numbers (what the verdict reads) is finite."""
+        ok = bool(passed) and all(finite(n) for n in numbers)
+        self.rows.append((name, "PASS" if ok else "FAIL", value))
+        return ok
+
+    def extend(self, checks):
+        """(name, passed, value) triples, as the published comparison gives them."""
+        for name, passed, value in checks:
+            self.add(name, passed, value)
+
+    def include(self, other):
+        """Another Checks object's checks, after these."""
+        self.rows += other.rows
+
+    def fail(self, message):
+        """A failed check given by its message alone."""
+        self.add(message, False)
+
+    def inform(self, keep):
+        """Turns every check whose name keep(name) refuses into information (reported, not decided)."""
+        self.rows = [(n, v if keep(n) else "info", t) for n, v, t in self.rows]
+
+    def failures(self):
+        return [name for name, verdict, _ in self.rows if verdict == "FAIL"]
+
+    def lines(self, template="check  {verdict}  {name}: {value}"):
+        return [template.format(verdict=verdict, name=name, value=value) for name, verdict, value in self.rows]
+
+    def write(self, f, template="check  {verdict}  {name}: {value}"):
+        """The 'check  PASS  name: value' lines (or the template's) to an open results file."""
+        for line in self.lines(template):
+            f.write(line + "\n")
+
+    def print_failures(self, summary=True):
+        """'CHECK FAILED: name' per failed check, then whether all passed."""
+        for name in self.failures():
+            print("CHECK FAILED:", name)
+        if summary and not self.failures():
+            print("All checks passed.")
+
+    def status(self):
+        """The exit status: 0 when no check failed."""
+        return 1 if self.failures() else 0
+
+
+def write_results(path, lines, checks=None):
+    """A results file: the lines, then the checks' lines; printed as written."""
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+        if checks is not None:
+            checks.write(f)
+    print_file(path)
+
+
+def print_file(path):
+    with open(path) as f:
+        sys.stdout.write(f.read())

@@ -1,0 +1,214 @@
+"""Reading what the tools write: time directories, profile tables, dictionaries (fit.dat, compare.dat,
+case dictionaries; setting an entry with dpdDictionary), runSweep's tables, the logs, OpenFOAM fields."""
+import glob
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+
+def _time_of(path):
+    return float(os.path.basename(path.rstrip("/")))
+
+
+def latest(pattern):
+    """The path matching pattern (.../<time>/<file>) whose time directory is the latest."""
+    paths = glob.glob(pattern)
+    if not paths:
+        sys.exit(f"plotResults: nothing matches {pattern}")
+    return max(paths, key=lambda p: _time_of(os.path.dirname(p)))
+
+
+def latest_dir(pattern):
+    """The time directory matching pattern (.../<time>) that is the latest."""
+    paths = glob.glob(pattern)
+    if not paths:
+        sys.exit(f"plotResults: nothing matches {pattern}")
+    return max(paths, key=_time_of)
+
+
+def latest_sampling(case, name):
+    """The latest <case>/<time>/sampling/<name>.h5 (a binnedProfile's sampled blocks)."""
+    pattern = os.path.join(case, "*", "sampling", name + ".h5")
+    paths = glob.glob(pattern)
+    if not paths:
+        sys.exit(f"plotResults: nothing matches {pattern}")
+    return max(paths, key=lambda p: _time_of(os.path.dirname(os.path.dirname(p))))
+
+
+def latest_fit(case=".", tool="fitSlipLength"):
+    """The latest fit.dat of a case's fitting tool (postProcessing/<tool>/<time>/fit.dat) as a dict."""
+    return read_dict(latest(os.path.join(case, "postProcessing", tool, "*", "fit.dat")))
+
+
+def latest_profile(case=".", name="channelProfile"):
+    """The latest profileBins table <name>.dat of a case (postProcessing/profileBins/<time>/)."""
+    return read_table(latest(os.path.join(case, "postProcessing", "profileBins", "*", name + ".dat")))
+
+
+def project_path(*parts):
+    """A path in the repository ($DPD_PROJECT_DIR, set by etc/bashrc)."""
+    return os.path.join(os.environ["DPD_PROJECT_DIR"], *parts)
+
+
+def read_table(path):
+    """A whitespace table with a '# name name ...' header (profileBins): {name: column}."""
+    with open(path) as f:
+        header = f.readline().lstrip("#").split()
+    data = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(header)}
+
+
+def read_columns(path, names):
+    """A headerless numeric table (chainBins.dat): {name: column} for the first len(names) columns."""
+    data = np.loadtxt(path, comments="#", ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(names)}
+
+
+def read_sections(directory, name):
+    """The sections profileBins wrote for the function object `name` (<name>_x<x>.dat): [(x, table)]
+    along x."""
+    paths = glob.glob(os.path.join(directory, f"{name}_x*.dat"))
+    positions = [float(re.search(r"_x(.*)\.dat$", p).group(1)) for p in paths]
+    return sorted(((x, read_table(p)) for x, p in zip(positions, paths)), key=lambda item: item[0])
+
+
+def dictionary_value(path, entry):
+    """An entry of a case dictionary (controlDict, dpdProperties) as dpdDictionary prints it."""
+    out = subprocess.run(["dpdDictionary", path, "-entry", entry, "-value"], check=True, capture_output=True, text=True)
+    return out.stdout.strip().rstrip(";")
+
+
+def dictionary_number(path, entry, default=None):
+    """A number of a case dictionary (dpdDictionary's value), or default when the entry is missing."""
+    try:
+        return float(dictionary_value(path, entry))
+    except subprocess.CalledProcessError:
+        if default is None:
+            raise
+        return default
+
+
+def vector(text):
+    """A dictionary's vector '(a b c)' as an array."""
+    return np.array([float(v) for v in text.strip("()").split()])
+
+
+def body_force(case="."):
+    """The x component of the case's body force (constant/dpdProperties bodyForce/value)."""
+    return float(vector(dictionary_value(os.path.join(case, "constant/dpdProperties"), "bodyForce/value"))[0])
+
+
+def wall_planes(path="constant/dpdProperties"):
+    """The lowest and highest z of the walls' `point (x y z)` entries of a dpdProperties file."""
+    with open(path) as f:
+        zs = sorted(float(p) for p in re.findall(r"point\s*\(\s*\S+\s+\S+\s+(\S+)\s*\)", f.read()))
+    return zs[0], zs[-1]
+
+
+def set_dictionary_value(path, entry, value):
+    """Sets an entry of a case dictionary with dpdDictionary, the file kept first as <path>.orig (what the
+    tutorials' Allclean puts back)."""
+    if not os.path.exists(path + ".orig"):
+        with open(path) as f, open(path + ".orig", "w") as orig:
+            orig.write(f.read())
+    subprocess.run(["dpdDictionary", path, "-entry", entry, "-set", value], check=True, capture_output=True, text=True)
+
+
+def read_dict(path):
+    """The plain `key value;` and `key (a b ...);` entries of a dictionary the tools write (fit.dat,
+    compare.dat): numbers as floats, lists as lists of floats, anything else as a string."""
+    with open(path) as f:
+        return parse_dict(f.read())
+
+
+def parse_dict(text):
+    """read_dict on the text of a dictionary (or of one sub-dictionary's body)."""
+    text = re.sub(r"FoamFile\s*\{[^}]*\}", "", text)
+    out = {}
+    for key, value in re.findall(r"^\s*(\w+)\s+([^;]+);", text, re.M):
+        value = value.strip()
+        try:
+            if value.startswith("("):
+                out[key] = [float(v) for v in value.strip("()").split()]
+            else:
+                out[key] = float(value)
+        except ValueError:
+            out[key] = value
+    return out
+
+
+def read_compare(path):
+    """compareFVM's compare.dat: the top-level entries, and each line's sub-dictionary {name: entries}."""
+    with open(path) as f:
+        head, _, rest = f.read().partition("\nlines")
+    return parse_dict(head), {name: parse_dict(body) for name, body in re.findall(r"(\w+)\s*\{([^{}]*)\}", rest)}
+
+
+def read_sweep(path):
+    """runSweep's table: {column: values}; numbers as arrays ("none", a quantity a run does not measure,
+    as NaN), other columns (the run's name, a vector value written as (1,0,0)) as lists of words."""
+    with open(path) as f:
+        header = f.readline().lstrip("#").split()
+        rows = [line.split() for line in f if line.strip()]
+    out = {}
+    for k, name in enumerate(header):
+        words = [r[k] for r in rows]
+        try:
+            out[name] = np.array([np.nan if w == "none" else float(w) for w in words])
+        except ValueError:
+            out[name] = words
+    return out
+
+
+def header_means(path):
+    """{name: (mean, error)} from the '# mean <name> <value> +- <error>' lines (chainStatistics)."""
+    with open(path) as f:
+        found = re.findall(r"# mean (\S+)\s+(\S+) \+- (\S+)", f.read())
+    return {k: (float(m), float(e)) for k, m, e in found}
+
+
+# ---- Logs ----------------------------------------------------------------------------------------------
+
+
+def read_text(path):
+    with open(path) as f:
+        return f.read()
+
+
+def log_values(text, pattern, kind=float, flags=0):
+    """Every match of pattern's group in a log's text, as numbers."""
+    return [kind(v) for v in re.findall(pattern, text, flags)]
+
+
+def run_finished(text):
+    """(steps, seconds, particle-steps per second) of the solver's 'Run finished' line; NaN without it."""
+    m = re.search(r"Run finished: (\d+) steps in ([0-9.eE+-]+) s, ([0-9.eE+-]+) particle-steps/s", text)
+    return (int(m.group(1)), float(m.group(2)), float(m.group(3))) if m else (float("nan"),) * 3
+
+
+def log_count(path, label):
+    """The number after 'label :' at the start of a line of a tool's log (NaN without it)."""
+    m = re.search(rf"^{label}\s*:\s*(\d+)", read_text(path), re.M)
+    return int(m.group(1)) if m else float("nan")
+
+
+# ---- OpenFOAM ------------------------------------------------------------------------------------------
+
+
+def foam_latest_time(case):
+    """The latest time directory (after 0) of an OpenFOAM case, as its name."""
+    times = [d for d in os.listdir(case) if re.fullmatch(r"[0-9.eE+-]+", d) and float(d) > 0]
+    return max(times, key=float)
+
+
+def foam_vector_field(path):
+    """internalField of an ascii volVectorField (nonuniform List<vector>) as an (n, 3) array."""
+    body = read_text(path).split("internalField", 1)[1]
+    n = int(re.search(r"List<vector>\s*(\d+)", body).group(1))
+    start = body.index("(", body.index("List<vector>")) + 1
+    numbers = re.findall(r"[-+0-9.eE]+", body[start:].replace("(", " ").replace(")", " "))
+    return np.array(numbers[: 3 * n], dtype=float).reshape(n, 3)
+

@@ -1,0 +1,80 @@
+"""Regions of an image mask (a geometry { type imageMask; } of constant/dpdProperties): its solid at the
+centres of a case's bins, the distance to the solid and the local pore size of the fluid, and the open
+band of rows fluid across the whole width (a crack along x)."""
+import numpy as np
+
+from .io import dictionary_value, vector
+
+
+def read_image_mask(path):
+    """An image mask's solid pixels (dark: grey below 1/2), row 0 the bottom (the picture's last row,
+    the smallest z, as the tools place it)."""
+    from matplotlib.image import imread
+
+    img = imread(path)
+    grey = img[..., :3].mean(axis=-1) if img.ndim == 3 else img
+    return (grey < 0.5)[::-1]
+
+
+def case_mask(case="."):
+    """The case's mask (constant/dpdProperties geometry/file), its path, and the box it covers in x and z
+    (system/randomEquilWallDict): (solid, path, (lower x, lower z), (upper x, upper z))."""
+    path = dictionary_value(f"{case}/constant/dpdProperties", "geometry/file").strip('"')
+    lo, hi = (vector(dictionary_value(f"{case}/system/randomEquilWallDict", f"box/{k}")) for k in ("min", "max"))
+    return read_image_mask(f"{case}/{path}" if case != "." else path), path, lo[[0, 2]], hi[[0, 2]]
+
+
+def on_grid(solid, lo, hi, xs, zs):
+    """The mask's solid at the points (xs, zs) of a grid (bin centres; rows z, columns x), the mask
+    covering the box [lo, hi] whatever its pixel size."""
+    column = np.clip(np.floor((xs - lo[0]) / (hi[0] - lo[0]) * solid.shape[1]).astype(int), 0, solid.shape[1] - 1)
+    row = np.clip(np.floor((zs - lo[1]) / (hi[1] - lo[1]) * solid.shape[0]).astype(int), 0, solid.shape[0] - 1)
+    return solid[np.ix_(row, column)]
+
+
+def distance_to_solid(solid):
+    """Distance from each cell centre to the nearest solid cell's edge (0 in the solid), periodic, in cells."""
+    n0, n1 = solid.shape
+    sr, sc = np.nonzero(solid)
+    d = np.zeros(solid.shape)
+    fr, fc = np.nonzero(~solid)
+    for a in range(0, len(fr), 200):
+        dr = np.abs(fr[a:a + 200, None] - sr[None, :])
+        dc = np.abs(fc[a:a + 200, None] - sc[None, :])
+        dr, dc = np.minimum(dr, n0 - dr), np.minimum(dc, n1 - dc)
+        # to the nearest point of the solid cell (a unit square), from the fluid cell's centre
+        ex, ez = np.maximum(dc - 0.5, 0), np.maximum(dr - 0.5, 0)
+        d[fr[a:a + 200], fc[a:a + 200]] = np.sqrt(ex ** 2 + ez ** 2).min(axis=1)
+    return d
+
+
+def local_pore_size(dist):
+    """Local thickness of the pore space: for each fluid cell the diameter of the largest disc inside
+    the fluid (centred on a fluid cell, radius its distance to the solid) that covers it."""
+    n0, n1 = dist.shape
+    size = np.zeros(dist.shape)
+    rr, cc = np.mgrid[0:n0, 0:n1]
+    for r, c in zip(*np.nonzero(dist > 0)):
+        dr, dc = np.abs(rr - r), np.abs(cc - c)
+        dr, dc = np.minimum(dr, n0 - dr), np.minimum(dc, n1 - dc)
+        cover = dr * dr + dc * dc <= dist[r, c] ** 2
+        size[cover] = np.maximum(size[cover], 2 * dist[r, c])
+    return size
+
+
+def runs(flags):
+    """(start, length) of each run of True in a 1-D array, in order."""
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], flags.astype(int), [0]])))
+    return [(a, b - a) for a, b in zip(edges[::2], edges[1::2])]
+
+
+def open_band(solid):
+    """The widest band of rows fluid at every column (a crack along x): (first row, last row) and per
+    column the opening there (the run of fluid rows holding the band's centre). None without one."""
+    bands = runs(~solid.any(axis=1))
+    if not bands:
+        return None
+    first, length = max(bands, key=lambda band: band[1])
+    centre = first + length // 2
+    widths = [n for column in ~solid.T for a, n in runs(column) if a <= centre < a + n]
+    return (first, first + length - 1), np.array(widths)

@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""The porous medium's crack from its mask, for a mask of one's own (Allrun, before the runs).
+
+Reads the mask (constant/dpdProperties geometry/file) over the box it covers (system/randomEquilWallDict)
+and finds its crack: the band of pixel rows that are fluid at every x (makePorousMask.py's crack runs
+along the flow, x). When the case's line `crack` (system/makeFoamCaseDict, which makeFoamCase samples
+and compareFVM compares) does not run across the box inside that band, the case was set up for another
+mask: the line is moved to the band's centre (across the box, four points per cutoff) and the sections of
+flowField (system/controlDict) to the crack's narrowest and widest columns; the dictionaries are kept as
+*.orig (Allclean puts them back). The tutorial's own masks leave the case as it is. A mask without such a
+band leaves it too, and says so: plotResults.py then compares the lines the case names.
+"""
+import subprocess
+import sys
+
+from dpdfoam.io import dictionary_value, set_dictionary_value, vector
+from dpdfoam.mask import case_mask, open_band, runs
+
+LINE = "lines/crack"
+
+
+def middle_of_first_run(flags):
+    a, n = runs(flags)[0]
+    return a + (n - 1) // 2
+
+
+def line_fits(band_z, lo, hi):
+    """Whether the case's crack line runs across the box (x) at a height inside the crack band."""
+    try:
+        start, end = (vector(dictionary_value("system/makeFoamCaseDict", f"{LINE}/{k}")) for k in ("start", "end"))
+    except subprocess.CalledProcessError:  # no line `crack`
+        return False
+    across = min(start[0], end[0]) <= lo[0] and max(start[0], end[0]) >= hi[0]
+    return start[2] == end[2] and band_z[0] < start[2] < band_z[1] and across
+
+
+def main():
+    solid, mask, lo, hi = case_mask()
+    pixel = (hi - lo) / solid.shape[::-1]  # (x, z) size of a pixel
+    crack = open_band(solid)
+    if crack is None:
+        print(f"crackFromMask: {mask} has no crack (no row fluid across the box): the case's lines are kept")
+        return 0
+    (first, last), widths = crack
+    band_z = lo[1] + first * pixel[1], lo[1] + (last + 1) * pixel[1]
+    print(f"crackFromMask: {mask}: crack band z {band_z[0]:g} to {band_z[1]:g}, width {widths.min()}-{widths.max()} pixels")
+    if line_fits(band_z, lo, hi):
+        print("crackFromMask: the case's crack line runs along it: the case is kept as it is")
+        return 0
+    z = 0.5 * (band_z[0] + band_z[1])
+    sections = [lo[0] + (middle_of_first_run(widths == w) + 0.5) * pixel[0] for w in (widths.min(), widths.max())]
+    set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/start", f"({lo[0]:g} 0 {z:g})")
+    set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/end", f"({hi[0]:g} 0 {z:g})")
+    set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/nPoints", f"{int(round(4 * (hi[0] - lo[0]))) + 1}")
+    set_dictionary_value("system/controlDict", "functions/flowField/sections", "(" + " ".join(f"{x:g}" for x in sections) + ")")
+    print(f"crackFromMask: the crack line set at z = {z:g} from x = {lo[0]:g} to {hi[0]:g}; sections at the narrowest "
+          f"and widest columns, x = {sections[0]:g} and {sections[1]:g}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
