@@ -1,5 +1,5 @@
 #!/bin/bash
-# Bad input as a user meets it (README, "Bad input and what it gets"): every case below must end with
+# Bad input as a user meets it (docs/guide/errors.md, "Bad input and what it gets"): every case below must end with
 # a non-zero exit status and a message naming the file (and keyword, dataset or row), or, for a
 # keyword given twice, run with a warning as the log's first line. A runaway leaves no unhealthy
 # time directory behind.
