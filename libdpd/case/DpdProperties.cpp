@@ -115,13 +115,14 @@ WallList readWalls(const Dictionary& d, int dimension, double cutoff, std::vecto
     WallList walls;
     if (!d.found("walls")) return walls;
     const Dictionary& wd = d.subDict("walls");
+    const std::shared_ptr<const Dictionary> geometry = geometryBlock(d);  // one copy shared by the walls
     for (const std::string& name : wd.keys()) {
         if (!wd.isDict(name)) wd.fail(name, "each wall is a sub-dictionary");
         const Dictionary& w = wd.subDict(name);
         const std::string type = w.get<std::string>("type");
         if (!wallRegistry().has(type))
             w.fail("type", "unknown wall type '" + type + "' (expected " + wallRegistry().nameList() + ")");
-        walls.add(wallRegistry().make(type, w, WallReadContext{name, walls.size(), dimension, cutoff, geometryBlock(d), &planes}));
+        walls.add(wallRegistry().make(type, w, WallReadContext{name, walls.size(), dimension, cutoff, geometry, &planes}));
     }
     return walls;
 }
