@@ -1,5 +1,7 @@
 #include "case/DpdProperties.hpp"
 
+#include "case/RunCompatibility.hpp"
+
 #include "geometry/GeometryDictionary.hpp"
 
 #include "core/Error.hpp"
@@ -155,15 +157,6 @@ void addGeometryWall(const Dictionary& d, int dimension, double cutoff, DpdModel
     m.walls.add(readGeometryWall(Dictionary::parse("type geometry;", "constant/dpdProperties geometry wall"), context));
 }
 
-// Taking back part of a bonded pair's force is done after the whole pair force, which the schemes
-// that split the pair force into parts (DPD-VV, Shardlow) do not compute.
-BondedPairs readBondedPairs(const Dictionary& bonds, const IntegratorSettings& integrator) {
-    const BondedPairs b = BondedPairs::read(bonds);
-    if (!b.keepsAll() && integrator.type != "GrootWarren" && integrator.type != "Euler")
-        bonds.subDict("bondedPairs").fail("dpd", "other than all needs the GrootWarren or Euler integrator, not " + integrator.type);
-    return b;
-}
-
 StabilitySettings readStability(const Dictionary& d) {
     StabilitySettings s;
     if (!d.found("stability")) return s;
@@ -247,10 +240,10 @@ DpdModel readDpdModel(const Dictionary& d) {
     m.integrator = readIntegrator(d);
     m.bodyForce = readBodyForce(d, m.dimension);  // forces/BodyForceTypes.cpp
     m.bondPotential = readBondPotential(d);         // forces/BondPotentialTypes.cpp
-    if (m.bondPotential) m.bondedPairs = readBondedPairs(d.subDict("bonds"), m.integrator);
+    if (m.bondPotential) m.bondedPairs = BondedPairs::read(d.subDict("bonds"));
     m.walls = readWalls(d, m.dimension, m.cutoff, m.planarWalls);
-    makeIntegrator(m.integrator, m.walls);  // the type refuses walls it cannot run
     addGeometryWall(d, m.dimension, m.cutoff, m);
+    checkCompatibility(caseParts(m));  // the integrator refuses what it cannot run
     m.stability = readStability(d);
     return m;
 }

@@ -15,6 +15,11 @@ std::string BondedPairs::description() const {
     return os.str();
 }
 
+Capabilities BondedPairs::capabilities() const {
+    if (keepsAll()) return {};
+    return {{Feature::velocityForce, Feature::pairForceTakenBack}, {}};
+}
+
 BondedPairs BondedPairs::read(const Dictionary& bonds) {
     BondedPairs b;
     if (!bonds.found("bondedPairs")) return b;

@@ -1,7 +1,6 @@
 #include "integrators/DpdVvIntegrator.hpp"
 
 #include "integrators/ForEachParticle.hpp"
-#include "integrators/PartialPairForces.hpp"
 #include "integrators/StepParts.hpp"
 #include "system/System.hpp"
 
@@ -16,10 +15,11 @@ WallCounters DpdVvIntegrator::step(System& sys) {
     Particles& p = sys.particles;
     const double halfDt = 0.5 * sys.dt();
     halfKickAndDrift(sys);
-    const WallCounters walls = endMove(sys, SortForces::Leave);  // the forces are computed anew
-    sys.computeForces();
+    const WallCounters walls = sys.afterMove(SortForces::Leave);  // the forces are computed anew
     // The dissipative loop below reads the ghosts' velocity changes, made from their whole forces.
-    sys.refreshGhostForces();
+    ForcePass whole;
+    whole.ghostsHoldOwnersForces = true;
+    sys.computeForces(whole);
     const long n = static_cast<long>(p.size());  // a decomposed run's count changes in the sort
     // Second half kick; keep v(t+dt) and f' aside, and put the velocity change dt f' / 2 in the
     // particles' velocities (zero for frozen particles, whose velocity never changes) so that one
@@ -34,13 +34,13 @@ WallCounters DpdVvIntegrator::step(System& sys) {
         p.vx[i] = kx; p.vy[i] = ky; p.vz[i] = kz;
     });
     p.clearForces();
-    addDissipativeForces(sys);
+    sys.computeForces(ForcePass::dissipativeAdded());
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
         p.fx[i] += fx_[i]; p.fy[i] += fy_[i]; p.fz[i] += fz_[i];
         p.vx[i] = vx_[i]; p.vy[i] = vy_[i]; p.vz[i] = vz_[i];
     }
-    sys.completeWalls();
+    sys.endStep();
     return walls;
 }
 

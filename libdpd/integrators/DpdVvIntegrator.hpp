@@ -20,7 +20,10 @@ public:
     // No coefficients.
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "DPDVV"; }
-    bool runsOnSeveralRanks() const override { return true; }
+    // It computes the pair force in parts, and the bonded pairs' share is taken back from the whole.
+    Capabilities capabilities() const override {
+        return {{}, {{{Feature::pairForceTakenBack}, "cannot take back part of the pair force (it computes the pair force in parts)", ""}}};
+    }
     WallCounters step(System& sys) override;
 
 private:

@@ -13,9 +13,9 @@ std::unique_ptr<Integrator> EulerIntegrator::New(const Dictionary& coeffs) {
 WallCounters EulerIntegrator::step(System& sys) {
     drift(sys);            // positions with the old velocities,
     kick(sys, sys.dt());   // velocities with the old forces
-    const WallCounters walls = endMove(sys, SortForces::Leave);  // the forces are computed anew
+    const WallCounters walls = sys.afterMove(SortForces::Leave);  // the forces are computed anew
     sys.computeForces();
-    sys.completeWalls();
+    sys.endStep();
     return walls;
 }
 

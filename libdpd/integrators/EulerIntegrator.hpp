@@ -10,7 +10,7 @@ public:
     // No coefficients.
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "Euler"; }
-    bool runsOnSeveralRanks() const override { return true; }
+    Capabilities capabilities() const override { return {}; }
     WallCounters step(System& sys) override;
 };
 

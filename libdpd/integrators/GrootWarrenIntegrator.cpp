@@ -21,13 +21,15 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
     // Where the pair loop makes the predicted velocities, it reads the old forces through the sort's
     // order, and nothing else reads them: the sort need not move them.
     const bool predictInPairLoop = !sys.hasVelocityDependentNonPairForces();
-    const WallCounters walls = endMove(sys, predictInPairLoop ? SortForces::Leave : SortForces::Move);
+    const WallCounters walls = sys.afterMove(predictInPairLoop ? SortForces::Leave : SortForces::Move);
     // v~ = v + lambda dt f = (v + dt f / 2) + (lambda - 1/2) dt f.
     const double predict = (lambda_ - 0.5) * dt;
     if (predictInPairLoop) {
-        sys.computeForces(predict);
+        ForcePass predicted;
+        predicted.predictorShift = predict;
+        sys.computeForces(predicted);
         kick(sys, halfDt);
-        sys.completeWalls();
+        sys.endStep();
         return walls;
     }
     // Keep v + dt f / 2 aside and write v~ into v for every other force that reads it (the sort may
@@ -44,7 +46,9 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         p.vy[i] += s * p.fy[i];
         p.vz[i] += s * p.fz[i];
     });
-    sys.computeForces(VelocityColumns{hx_.data(), hy_.data(), hz_.data()});
+    ForcePass frictionOfTheHalfKick;
+    frictionOfTheHalfKick.wallFriction = VelocityColumns{hx_.data(), hy_.data(), hz_.data()};
+    sys.computeForces(frictionOfTheHalfKick);
     forEachParticle(sys, [&](long i, auto mobile) {
         // A frozen particle gets back the velocity the predictor left alone.
         const double h = mobileFactor(mobile) * halfDt;
@@ -52,7 +56,7 @@ WallCounters GrootWarrenIntegrator::step(System& sys) {
         p.vy[i] = hy_[i] + h * p.fy[i];
         p.vz[i] = hz_[i] + h * p.fz[i];
     });
-    sys.completeWalls();
+    sys.endStep();
     return walls;
 }
 

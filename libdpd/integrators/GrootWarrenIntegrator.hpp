@@ -7,7 +7,7 @@
 // lambda = 0.5 is plain velocity Verlet; 0.65 is the usual choice.
 //
 // After the drift, v holds v + dt f / 2 and v~ is that plus (lambda - 1/2) dt f. The pair loop makes
-// v~ itself as it reads the velocities (System::computeForces(shift)), so v + dt f / 2 stays in v and
+// v~ itself as it reads the velocities (ForcePass::predictorShift), so v + dt f / 2 stays in v and
 // the step ends with one more half kick: no pass of its own for the prediction and no copy of v.
 // Where other forces depend on the velocities (tunable-slip walls) they must see v~ too: there v~ is
 // written into v for the force computation and v + dt f / 2 kept aside.
@@ -24,7 +24,7 @@ public:
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "GrootWarren"; }
     double lambda() const { return lambda_; }
-    bool runsOnSeveralRanks() const override { return true; }
+    Capabilities capabilities() const override { return {}; }
     WallCounters step(System& sys) override;
     // Bytes held by the integrator's own buffers.
     std::size_t memoryBytes() const { return sizeof(double) * (hx_.capacity() + hy_.capacity() + hz_.capacity()); }

@@ -24,16 +24,4 @@ std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s) {
     return integratorRegistry().make(s.type, s.coeffs);
 }
 
-std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallList& walls) {
-    auto integrator = makeIntegrator(s);
-    const std::string why = integrator->unsupported(walls);
-    if (!why.empty()) s.coeffs.fail("type", why);
-    return integrator;
-}
-
-void requireRunsOnSeveralRanks(const Integrator& integrator, const IntegratorSettings& s) {
-    if (!integrator.runsOnSeveralRanks())
-        s.coeffs.fail("type", integrator.name() + " cannot run on several ranks yet (GrootWarren, DPDVV and Euler can)");
-}
-
 }  // namespace dpd

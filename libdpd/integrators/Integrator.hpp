@@ -5,6 +5,7 @@
 // Types are chosen by name (integrator { type <name>; <its coefficients> } in dpdProperties): each
 // type makes itself from its sub-dictionary, reading and checking its own keys, and says which scenes
 // it cannot run. Adding a type adds its files and one line in integrators/IntegratorTypes.cpp.
+#include "core/Capabilities.hpp"
 #include "core/Registry.hpp"
 #include "io/Dictionary.hpp"
 #include "walls/WallList.hpp"
@@ -23,12 +24,10 @@ public:
     virtual std::string name() const = 0;
     // Returns what the walls did during the step.
     virtual WallCounters step(System& sys) = 0;
-    // Why this scheme cannot run a scene with these walls; empty when it can.
-    virtual std::string unsupported(const WallList&) const { return {}; }
-    // Whether the scheme can run decomposed over several ranks: only what every particle does alone
-    // between one pair loop and the next (a second pair loop in a step would need the ghosts' new
-    // velocities, a sequential sweep the neighbours' updates).
-    virtual bool runsOnSeveralRanks() const { return false; }
+    // What the scheme cannot run beside (core/Capabilities.hpp), checked once before the first step.
+    // Several ranks take only what every particle does alone between one pair loop and the next (a
+    // sequential sweep would need the neighbours' updates).
+    virtual Capabilities capabilities() const = 0;
 };
 
 using IntegratorRegistry = Registry<Integrator, const Dictionary&>;
@@ -52,9 +51,5 @@ struct IntegratorSettings {
 
 // Throws std::invalid_argument for an unknown type, InputError for bad coefficients.
 std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s);
-// The same for a scene's walls: an InputError at the type's keyword when the scheme cannot run them.
-std::unique_ptr<Integrator> makeIntegrator(const IntegratorSettings& s, const WallList& walls);
-// An InputError at the type's keyword when the scheme cannot run decomposed over several ranks.
-void requireRunsOnSeveralRanks(const Integrator& integrator, const IntegratorSettings& s);
 
 }  // namespace dpd

@@ -1,6 +1,5 @@
 #include "integrators/ShardlowIntegrator.hpp"
 
-#include "integrators/PartialPairForces.hpp"
 #include "integrators/ShardlowSweep.hpp"
 #include "integrators/StepParts.hpp"
 #include "system/System.hpp"
@@ -12,24 +11,24 @@ std::unique_ptr<Integrator> ShardlowIntegrator::New(const Dictionary& coeffs) {
     return std::make_unique<ShardlowIntegrator>();
 }
 
-std::string ShardlowIntegrator::unsupported(const WallList& walls) const {
-    // The sweep updates velocities pair by pair; a wall force that depends on them is not in it.
-    if (!walls.anyActsWithForces()) return {};
-    return "the Shardlow integrator does not support walls that act with forces (tunableSlip) yet: use GrootWarren, DPDVV or Euler";
+Capabilities ShardlowIntegrator::capabilities() const {
+    return {{},
+            {{{Feature::severalRanks}, "cannot run on several ranks yet (its sweep updates one pair after another)", ""},
+             {{Feature::velocityForce}, "does not run forces besides the pair force that read the velocities yet (its sweep "
+                                        "updates the velocities pair by pair)", ""}}};
 }
 
 WallCounters ShardlowIntegrator::step(System& sys) {
-    if (forcesStep_ != sys.step) computeConservativeForces(sys);
+    if (forcesStep_ != sys.step) sys.computeForces(ForcePass::conservativeAndOthers());
     const double dt = sys.dt();
     shardlowSweep(sys, dt, 0);
     halfKickAndDrift(sys);
-    // Its conservative forces are cleared and made again, but not by System::computeForces, the one
-    // that takes back forces a sort left behind: they are moved.
-    const WallCounters walls = endMove(sys, SortForces::Move);
-    computeConservativeForces(sys);
+    // Its conservative forces are cleared and made again, not written over: the sort moves them.
+    const WallCounters walls = sys.afterMove(SortForces::Move);
+    sys.computeForces(ForcePass::conservativeAndOthers());
     kick(sys, 0.5 * dt);
     forcesStep_ = sys.step;
-    sys.completeWalls();
+    sys.endStep();
     return walls;
 }
 

@@ -22,8 +22,9 @@ public:
     // No coefficients.
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "Shardlow"; }
-    // Its sweep has no place yet for the tunable-slip wall's velocity-dependent force.
-    std::string unsupported(const WallList& walls) const override;
+    // Its sweep goes pair after pair through the whole box, and has no place yet for a force besides
+    // the pair force that reads the velocities (the tunable-slip wall's friction, the bonded pairs').
+    Capabilities capabilities() const override;
     WallCounters step(System& sys) override;
 
 private:

@@ -56,13 +56,4 @@ void halfKickAndDrift(System& sys) {
     });
 }
 
-WallCounters endMove(System& sys, SortForces forces) {
-    sys.advanceClock();
-    // Reflect before wrapping (the sort wraps): a particle that crossed a wall lying on a box face must
-    // be mirrored back, not carried round to the far side of the box.
-    const WallCounters walls = sys.applyWalls();
-    sys.sortByCell(forces);
-    return walls;
-}
-
 }  // namespace dpd

@@ -34,15 +34,6 @@ std::vector<std::uint8_t> readSpeciesMask(const Dictionary& d, const System& sys
     return mask;
 }
 
-// Whether a wall completes crossings at the end of the step (bounce-forward: to the position mirrored
-// across its surface) that move particles along x, the axis of a decomposed run's slabs.
-bool movesAcrossSlabsAfterSort(const WallList& walls) {
-    for (std::size_t w = 0; w < walls.size(); ++w) {
-        if (walls[w].rule().defersCrossing() && walls[w].shape().returnsAlong(0)) return true;
-    }
-    return false;
-}
-
 }  // namespace
 
 std::unique_ptr<FunctionObject> BinnedProfile::New(const Dictionary& d, const std::string& name, const System& sys) {
@@ -62,16 +53,21 @@ std::unique_ptr<FunctionObject> BinnedProfile::New(const Dictionary& d, const st
         const int flow = readAxis(d, sys, "flowAxis");
         if (flow == layout.axis) d.fail("flowAxis", "the flow axis must differ from the bin axis (the shear stress is sigma_flow,axis)");
         f->accumulator_.setStressFlowAxis(flow);
-        if (sys.bondedPairsCorrected())
-            d.fail("stress", "is not sampled with bondedPairs other than dpd all (the pair virial would count the left-out terms)");
-        if (sys.domain() && movesAcrossSlabsAfterSort(sys.walls))
-            d.fail("stress", "is not sampled on several ranks with a bounceForward wall whose normal has an x component (a crossing "
-                             "it completes after the step's sort can carry a particle past a slab's face): run on one rank");
     } else if (d.found("flowAxis")) {
         d.fail("flowAxis", "only with stress yes");
     }
     f->crossSection_ = binCrossSection(layout, sys.box);
     return f;
+}
+
+Capabilities BinnedProfile::capabilities() const {
+    if (accumulator_.stressFlowAxis() < 0) return {};
+    return {{},
+            {{{Feature::pairForceTakenBack}, "cannot sample the stress (the pair virial would count the terms taken back)", "stress"},
+             {{Feature::severalRanks, Feature::movesAlongXAfterSort},
+              "cannot sample the stress on several ranks beside a wall whose crossings, completed after the step's sort, can "
+              "carry particles past a slab's face",
+              "stress"}}};
 }
 
 void BinnedProfile::execute(const System& sys) {

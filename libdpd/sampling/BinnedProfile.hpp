@@ -42,8 +42,9 @@ public:
     void write(const std::string& timeDir, const System& sys) const override;
     void restore(const std::string& timeDir) override;
     // Each rank samples its own particles (with the stress, the pairs of its own planes:
-    // sampling/PairVirial.hpp); the sums are added over the ranks.
-    bool runsOnSeveralRanks() const override { return true; }
+    // sampling/PairVirial.hpp); the sums are added over the ranks. The stress is the pair virial of
+    // the whole pair force, on the pairs as sorted.
+    Capabilities capabilities() const override;
     void sumOverRanks(const Communicator& comm) override;
     void keepRestoredSums(bool keep) override;
 

@@ -51,7 +51,7 @@ public:
 
     // In a decomposed run the first rank samples every chain (gathered there) and the others none:
     // nothing to add over the ranks.
-    bool runsOnSeveralRanks() const override { return true; }
+    Capabilities capabilities() const override { return {}; }
 
     const std::vector<ChainSample>& samples() const { return samples_; }
 

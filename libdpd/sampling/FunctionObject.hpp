@@ -3,6 +3,7 @@
 // sub-dictionary, it samples after the steps it wants, writes what it holds at each write time, and
 // carries its sums on across a restart. Adding a type adds its files and one line in
 // sampling/FunctionObjectTypes.cpp.
+#include "core/Capabilities.hpp"
 #include "core/Registry.hpp"
 
 #include <memory>
@@ -25,10 +26,12 @@ public:
     virtual void write(const std::string& timeDir, const System& sys) const = 0;
     // Carries on from what it wrote under <timeDir>/ before a restart (nothing there is fine).
     virtual void restore(const std::string& timeDir) = 0;
-    // Whether it samples a run decomposed over several ranks: each rank samples its own particles,
-    // sumOverRanks adds them (on every rank, before the first writes), and the sums restored from a
-    // time directory count once (keepRestoredSums is false on all ranks but the first).
-    virtual bool runsOnSeveralRanks() const { return false; }
+    // What it cannot sample beside (core/Capabilities.hpp), checked once before the first step. A type
+    // that samples a run decomposed over several ranks says so by leaving out the refusal of several
+    // ranks: each rank samples its own particles, sumOverRanks adds them (on every rank, before the
+    // first writes), and the sums restored from a time directory count once (keepRestoredSums is false
+    // on all ranks but the first).
+    virtual Capabilities capabilities() const = 0;
     virtual void sumOverRanks(const Communicator&) {}
     virtual void keepRestoredSums(bool) {}
 };

@@ -34,12 +34,6 @@ void FunctionObjects::write(const std::string& timeDir, const System& sys) const
     for (const auto& f : functions_) f->write(timeDir, sys);
 }
 
-std::string FunctionObjects::firstSingleRank() const {
-    for (const auto& f : functions_)
-        if (!f->runsOnSeveralRanks()) return f->name();
-    return {};
-}
-
 FunctionObjects FunctionObjects::summedOverRanks(const Communicator& comm) const {
     FunctionObjects out(*this);
     for (auto& f : out.functions_) f->sumOverRanks(comm);

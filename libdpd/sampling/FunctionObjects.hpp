@@ -26,8 +26,7 @@ public:
     // Carries sums accumulated before a restart on from <timeDir>/ (missing files are fine).
     void restore(const std::string& timeDir);
     std::size_t size() const { return functions_.size(); }
-    // The name of the first function object that cannot sample a decomposed run; empty if none.
-    std::string firstSingleRank() const;
+    const FunctionObject& operator[](std::size_t k) const { return *functions_[k]; }
     // A copy whose sums are those of every rank together (call on every rank of a decomposed run).
     FunctionObjects summedOverRanks(const Communicator& comm) const;
     // After restore(): whether this rank keeps the sums read back (only the first rank of a decomposed run does).

@@ -16,7 +16,7 @@
 //
 // Bonds count too: each spring's r_ij F_ij shared along its segment in the same way (its force is
 // conservative and exact at the sampled positions). With bondedPairs other than `dpd all` the stress
-// is refused (std::logic_error): the pair traversal would count the terms the bonded pairs leave out.
+// sampler refuses to run (BinnedProfile::capabilities): the traversal would count the terms taken back.
 //
 // Every interacting pair counts (fluid-wall pairs carry the wall's stress into the fluid), whatever
 // species the profile bins for its other fields. Deterministic on any number of threads: each slab

@@ -8,6 +8,7 @@
 #include "io/Dictionary.hpp"
 #include "case/BoxDictionary.hpp"
 #include "case/DpdProperties.hpp"
+#include "case/RunCompatibility.hpp"
 #include "setup/InitialConditions.hpp"
 #include "setup/InitialFlow.hpp"
 #include "system/Monitors.hpp"
@@ -76,8 +77,10 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
     fluidOnly.walls = WallList{};  // the box is filled through the solids too
     // Under mpirun the ranks share the box (docs/parallel.md); every rank then goes on with all of it.
     System sys = buildSystem(fluidOnly, snap, dt, "the filled box of system/randomEquilWallDict", &Communicator::world());
+    std::vector<RunPart> parts = caseParts(fluidOnly);
+    parts.push_back(ranksPart(sys.domain() ? sys.domain()->communicator().size() : 1));
+    checkCompatibility(parts);
     const auto integrator = makeIntegrator(model.integrator);
-    if (sys.domain()) requireRunsOnSeveralRanks(*integrator, model.integrator);
     useThreadsForParticles(sys.particles.size());
     sys.sortByCell();
     sys.computeForces();

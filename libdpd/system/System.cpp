@@ -28,6 +28,22 @@ PairKernelFunction pairKernelFor(const PairForceParameters& params) {
     });
 }
 
+// The terms the integrators ask for: the whole force (with or without its conservative term), and
+// the conservative and dissipative terms alone. Null: no term left to compute.
+PairKernelFunction pairKernelForTerms(unsigned terms, const PairForceParameters& params) {
+    switch (terms) {
+    case 0u: return nullptr;
+    case kConservativeTerm | kDissipativeTerm | kRandomTerm:
+        return pairKernelFor<kConservativeTerm | kDissipativeTerm | kRandomTerm>(params);
+    case kDissipativeTerm | kRandomTerm: return pairKernelFor<kDissipativeTerm | kRandomTerm>(params);
+    case kConservativeTerm: return pairKernelFor<kConservativeTerm>(params);
+    case kDissipativeTerm: return pairKernelFor<kDissipativeTerm>(params);
+    default: throw std::invalid_argument("System::computeForces: no pair loop for this set of terms");
+    }
+}
+
+constexpr unsigned kAllTerms = kConservativeTerm | kDissipativeTerm | kRandomTerm;
+
 // Adds the seconds from construction to destruction to *total, when total is set.
 class ScopedTimer {
 public:
@@ -68,8 +84,7 @@ void System::initialise() {
     if (ranks && ranks->parallel()) decompose();
     conservative_ = pairs.anyConservative();
     wallForces_ = walls.anyActsWithForces();
-    pairKernel_ = conservative_ ? pairKernelFor<kConservativeTerm | kDissipativeTerm | kRandomTerm>(forceParameters)
-                                : pairKernelFor<kDissipativeTerm | kRandomTerm>(forceParameters);
+    wholePairKernel_ = pairKernelForTerms(conservative_ ? kAllTerms : kAllTerms & ~kConservativeTerm, forceParameters);
     if (box.dimension == 2)
         for (std::size_t i = 0; i < particles.size(); ++i) {
             particles.ry[i] = 0.5 * (box.lo.y() + box.hi.y());
@@ -175,34 +190,48 @@ void System::exchangeWithNeighbours() {
 
 Particles System::orderedParticles() const { return rotation_ == 0 ? particles : particles.rotated(rotation_); }
 
-void System::computeForces() { computeForces(0.0); }
-
-void System::computeForces(const VelocityColumns& wallFriction) { computeForces(0.0, wallFriction); }
-
-void System::computeForces(double predictorShift) { computeForces(predictorShift, VelocityColumns{}); }
-
-void System::computeForces(double predictorShift, const VelocityColumns& wallFriction) {
+void System::computeForces(const ForcePass& pass) {
     if (!initialised_) throw std::logic_error("System::computeForces called before initialise()");
-    if (predictorShift != 0.0 && hasVelocityDependentNonPairForces())
-        throw std::logic_error("System::computeForces: a velocity predictor in the pair loop with walls that act with forces");
+    if (pass.predictorShift != 0.0 && (hasVelocityDependentNonPairForces() || pass.pairTerms != kAllTerms))
+        throw std::logic_error("System::computeForces: a velocity predictor needs the whole pair force as the only one reading v");
+    if (pass.addToHeld && forcesLeftBySort_)
+        throw std::logic_error("System::computeForces: adding to the forces a sort left behind");
     const ScopedTimer timer(stepTimes ? &stepTimes->forces : nullptr);
-    // The pair loop writes its forces over the old ones (with a predictor after reading them): no
-    // pass clearing them first. The other forces are added to them.
-    const std::uint32_t* forceOrder = forcesLeftBySort_ ? cells_.order().data() : nullptr;
-    const PairLoopContext ctx{cells_, pairs, random_, static_cast<std::uint64_t>(step),
-                              {predictorShift, &frozenOfSpecies_, forceOrder}, true};
-    pairKernel_(particles, ctx, forceParameters);
-    forcesLeftBySort_ = false;  // written over by the pair forces
-    if (bondedPairsCorrected())
-        correctBondedPairs(bonds, bondedPairs, {pairs, forceParameters, random_, static_cast<std::uint64_t>(step)}, box,
-                           particles);
-    bodyForce->apply(particles, frozenOfSpecies_, box);
-    addBondForces();
-    if (wallForces_) {
-        WallStep s = wallStep();
-        s.friction = wallFriction;
-        walls.addForces(s);
+    // The force list, in the order its terms are added.
+    addPairForces(pass);
+    if (pass.otherTerms) {
+        if (bondedPairsCorrected())
+            correctBondedPairs(bonds, bondedPairs, {pairs, forceParameters, random_, static_cast<std::uint64_t>(step)},
+                               box, particles);
+        bodyForce->apply(particles, frozenOfSpecies_, box);
+        addBondForces();
+        if (wallForces_) {
+            WallStep s = wallStep();
+            s.friction = pass.wallFriction;
+            walls.addForces(s);
+        }
     }
+    if (pass.ghostsHoldOwnersForces) refreshGhostForces();
+}
+
+void System::addPairForces(const ForcePass& pass) {
+    const auto stepKey = static_cast<std::uint64_t>(step);
+    if (pass.pairTerms == kAllTerms && !pass.addToHeld) {
+        // The whole pair force is written over the old forces (with a predictor after reading them,
+        // through the sort's order where it left them behind): no pass clearing them first.
+        const std::uint32_t* forceOrder = forcesLeftBySort_ ? cells_.order().data() : nullptr;
+        const PairLoopContext ctx{cells_, pairs, random_, stepKey, {pass.predictorShift, &frozenOfSpecies_, forceOrder}, true};
+        wholePairKernel_(particles, ctx, forceParameters);
+        forcesLeftBySort_ = false;
+        return;
+    }
+    if (!pass.addToHeld) {
+        particles.clearForces();
+        forcesLeftBySort_ = false;
+    }
+    const unsigned terms = conservative_ ? pass.pairTerms : pass.pairTerms & ~kConservativeTerm;
+    const PairKernel kernel = pairKernelForTerms(terms, forceParameters);
+    if (kernel) kernel(particles, PairLoopContext{cells_, pairs, random_, stepKey}, forceParameters);
 }
 
 void System::addBondForces() {
@@ -222,6 +251,15 @@ WallCounters System::applyWalls() {
     WallStep s = wallStep();
     return walls.reflect(s);
 }
+
+WallCounters System::afterMove(SortForces forces) {
+    advanceClock();
+    const WallCounters counters = applyWalls();
+    sortByCell(forces);
+    return counters;
+}
+
+void System::endStep() { completeWalls(); }
 
 void System::completeWalls() {
     dropGhosts();

@@ -11,6 +11,7 @@
 #include "forces/DpdPairForce.hpp"
 #include "neighbour/CellList.hpp"
 #include "parallel/SlabDomain.hpp"
+#include "system/ForcePass.hpp"
 #include "random/PairRandom.hpp"
 #include "walls/WallList.hpp"
 
@@ -90,39 +91,32 @@ public:
     // the sort's order); until then they belong to no particle in particular. Throws
     // std::logic_error for a second Leave before the forces were computed again.
     void sortByCell(SortForces forces = SortForces::Move);
-    // Forces at the current positions and velocities: pair forces (keyed to the current step's random
-    // numbers) plus the body force, plus the forces of walls that act with forces (tunable slip).
-    // Requires sortByCell() since the last move.
-    void computeForces();
-    // The same with the velocities predicted as v + predictorShift f (f the forces held on entry;
-    // frozen particles keep theirs), in the pair loop's pass over the particles: v itself is left
-    // alone. Only where the pair forces are the only velocity-dependent ones (see below); throws
-    // std::logic_error otherwise.
-    void computeForces(double predictorShift);
-    // The same, the walls' friction reading the velocities given instead of the particles' own.
-    void computeForces(const VelocityColumns& wallFriction);
-    // Adds the bonds' spring forces (nothing without bonds); part of computeForces, and of the
-    // conservative forces of integrators that split the pair force.
-    void addBondForces();
+    // The forces of the current positions and velocities that the pass asks for (system/ForcePass.hpp;
+    // by default all of them): the DPD pair force (keyed to the current step's random numbers), the
+    // bonded pairs' share taken back, the body force, the bonds' springs, the walls' forces (tunable
+    // slip), added in that order. Requires sortByCell() since the last move. Throws std::logic_error
+    // for a predictor where a force besides the pair force reads the velocities, or a pass that adds
+    // to forces a sort left behind.
+    void computeForces(const ForcePass& pass = ForcePass::whole());
     // What the last bond pass found: a broken bond (at or beyond the potential's length) stops a run.
     const BondPassResult& bondPass() const { return bondPass_; }
     // Whether any force but the pair forces depends on the velocities (walls' forces, e.g. friction).
     // (Taking back part of a bonded pair's DPD force is one: it reads the velocities.)
     bool hasVelocityDependentNonPairForces() const { return wallForces_ || bondedPairsCorrected(); }
     bool bondedPairsCorrected() const { return !bonds.empty() && !bondedPairs.keepsAll(); }
-    // Each wall returns the fluid particles that crossed into it during the last move (call before
-    // wrapping, that is before wrapPositions or sortByCell). Counts per wall, in the list's order.
-    WallCounters applyWalls();
+    // The boundary phase once the particles have moved: the clock moves on one step, each wall
+    // returns the fluid particles that crossed into it (before wrapping: a particle that crossed a
+    // wall lying on a box face is mirrored back, not carried round to the far side), then sortByCell
+    // (a decomposed run's migration and ghosts included), ready for new forces. Counts per wall, in
+    // the list's order.
+    WallCounters afterMove(SortForces forces);
+    // The boundary phase once the step's velocities are complete: the walls finish what they left for
+    // the end of the step (bounce-forward crossings: mirrored and reversed with the velocity the step
+    // gave them) and record where the next step starts; a decomposed run first lets go of the ghosts
+    // the last sort took in (dropGhosts).
+    void endStep();
     // True if the point is inside the solid of any wall.
     bool isInsideSolid(double x, double y, double z) const { return walls.isInsideSolid({x, y, z}); }
-    // Finishes what the walls left for the end of the step (bounce-forward crossings: mirrored and
-    // reversed with the velocity the step gave them) and lets them record where the next step starts.
-    // Every integrator calls it once the velocities of the step are complete. In a decomposed run it
-    // first lets go of the ghosts the last sort took in (dropGhosts).
-    void completeWalls();
-    // In a decomposed run, the ghosts' forces made those their owners computed (nothing on one rank):
-    // for a second pair loop in a step that reads them.
-    void refreshGhostForces();
     // In a decomposed run, drops the neighbours' particles that the last sortByCell added for the pair
     // forces, so that the particles are this rank's own again (nothing on one rank). The particles
     // may then be stored out of one process's order (rotated: what does not depend on their order
@@ -137,9 +131,13 @@ public:
     std::size_t countMobile() const;
 
 private:
-    // Every computeForces: the pair loop's predictor shift and the velocities the walls' friction reads
-    // (null: the particles').
-    void computeForces(double predictorShift, const VelocityColumns& wallFriction);
+    // The pair terms the pass asks for, written over the forces held or added to them.
+    void addPairForces(const ForcePass& pass);
+    // The bonds' spring forces (nothing without bonds).
+    void addBondForces();
+    WallCounters applyWalls();
+    void completeWalls();
+    void refreshGhostForces();
     WallStep wallStep();  // what the walls act on at this step
     void decompose();     // this rank's slab of the box (initialise, with several ranks)
     // Migration and ghosts before a decomposed run's sort, and the sort's order for them.
@@ -152,7 +150,7 @@ private:
     std::size_t rotation_ = 0;  // one process's order of the particles is [rotation_, n) then [0, rotation_)
     PairRandom random_;
     std::vector<std::uint8_t> frozenOfSpecies_;
-    PairKernel pairKernel_ = nullptr;
+    PairKernel wholePairKernel_ = nullptr;  // every term this scene uses (no conservative one where a = 0)
     std::vector<DeferredCrossing> deferredCrossings_;
     std::vector<long> frozenPerWall_;
     BondPassResult bondPass_;

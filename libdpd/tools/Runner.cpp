@@ -8,6 +8,7 @@
 #include "case/ControlDict.hpp"
 #include "case/DecomposeParDict.hpp"
 #include "case/DpdProperties.hpp"
+#include "case/RunCompatibility.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/RankChains.hpp"
 #include "system/Monitors.hpp"
@@ -166,8 +167,8 @@ public:
                           ghostReachFor(model.cutoff, snapshot.bonds.empty() ? nullptr : model.bondPotential.get()));
         System sys = buildSystem(model, std::move(snapshot), control.deltaT, snapshotFile, &world, decomposition.planes);
         FunctionObjects functions = FunctionObjects::read(control.functions, sys);
+        checkCompatibility(runParts(model, sys.domain() ? world.size() : 1, functions, control));
         const auto integrator = makeIntegrator(model.integrator);
-        if (sys.domain()) requireDecomposable(*integrator, functions, model, control);
         if (sys.time > 0.0) functions.restore((fs::path(caseDir_) / start).string());
         // Each rank adds its own samples; what the time directory held counts once.
         if (sys.domain()) functions.keepRestoredSums(Communicator::world().isRoot());
@@ -184,12 +185,13 @@ public:
     }
 
 private:
-    // What a decomposed run cannot do yet: said before anything runs, at the keyword that asks for it.
-    static void requireDecomposable(const Integrator& integrator, const FunctionObjects& functions, const DpdModel& model,
-                                    const RunControl& control) {
-        requireRunsOnSeveralRanks(integrator, model.integrator);
-        const std::string single = functions.firstSingleRank();
-        if (!single.empty()) control.functions.fail(single, "this function object cannot run on several ranks yet");
+    // Everything the run is made of, for the check pass before anything runs.
+    static std::vector<RunPart> runParts(const DpdModel& model, int ranks, const FunctionObjects& functions,
+                                         const RunControl& control) {
+        std::vector<RunPart> parts = caseParts(model);
+        parts.push_back(ranksPart(ranks));
+        for (RunPart& f : functionParts(functions, control.functions)) parts.push_back(std::move(f));
+        return parts;
     }
 
     void loop(System& sys, const RunControl& control, const DpdModel& model, FunctionObjects& functions,

@@ -14,7 +14,9 @@ class SurfaceForce {
 public:
     virtual ~SurfaceForce() = default;
 
-    // The force's part of the log's account of the wall.
+    // The keyword that names the force in the wall's entry (messages), and its part of the log's
+    // account of the wall.
+    virtual std::string keyword() const = 0;
     virtual std::string description() const = 0;
     // Why the force cannot act in this box (empty when it can), checked when a run is built.
     virtual std::string unfitFor(const Box&) const { return {}; }

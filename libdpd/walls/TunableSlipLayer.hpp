@@ -17,6 +17,7 @@ public:
     TunableSlipLayer(const TunableSlipParameters& parameters, std::optional<TunableSlipStripes> stripes,
                      std::size_t wallIndex);
 
+    std::string keyword() const override { return "tunableSlip"; }
     std::string description() const override;
     std::string unfitFor(const Box& box) const override;
     void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;

@@ -57,6 +57,13 @@ std::string Wall::description() const {
     return os.str();
 }
 
+Capabilities Wall::capabilities() const {
+    Capabilities c;
+    if (force_) c.features.add(Feature::velocityForce);
+    if (defers_ && shape_->returnsAlong(0)) c.features.add(Feature::movesAlongXAfterSort);
+    return c;
+}
+
 void Wall::markFlowAxes(const Box& box, std::array<bool, 3>& varies) const {
     shape_->markFlowAxes(box, varies);
     if (force_) force_->markFlowAxes(box, varies);

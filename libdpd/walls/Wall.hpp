@@ -3,6 +3,7 @@
 // (what it does to the fluid that crosses or approaches the surface: walls/WallRule.hpp), joined here
 // once for every shape and rule; optionally a force its surface exerts (walls/SurfaceForce.hpp) and a
 // velocity it slides at, carrying its frozen particles. WallList runs the walls of a scene in order.
+#include "core/Capabilities.hpp"
 #include "walls/SurfaceForce.hpp"
 #include "walls/WallRule.hpp"
 #include "walls/WallShape.hpp"
@@ -39,6 +40,9 @@ public:
 
     // Whether the wall acts on the fluid with forces; those forces may depend on the velocities.
     bool actsWithForces() const { return force_ != nullptr; }
+    const SurfaceForce* surfaceForce() const { return force_.get(); }
+    // Its force reads the velocities; a bounce-forward crossing along x moves a particle after the sort.
+    Capabilities capabilities() const;
     // Adds the wall's forces to the mobile particles (after the pair forces).
     void addForces(WallStep& s) const;
 

@@ -314,7 +314,7 @@ sed -i -e 's/^\( *upper { type plane;.*\)$/\1\n    side { type plane; point (-4.
 echo "stability { maxInsideWalls 1000000; }" >> "$bad/constant/dpdProperties"  # the fluid behind it
 grep -q "side { type plane" "$bad/constant/dpdProperties" || fail "the x-facing wall was not added"
 run "$bad" 2 1
-expectError $? "$bad/log" "system/controlDict" "stress" "bounceForward wall whose normal has an x component"
+expectError $? "$bad/log" "system/controlDict" "stress" "cannot sample the stress on several ranks" "wall 'side'"
 mv "$bad/dpdProperties.kept" "$bad/constant/dpdProperties"
 sed -i -e 's/type GrootWarren; lambda 0.65;/type Shardlow;/' "$bad/constant/dpdProperties"
 run "$bad" 2 1

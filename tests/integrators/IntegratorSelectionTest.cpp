@@ -1,7 +1,7 @@
 // Choosing the integrator by name (integrators/Integrator.*, IntegratorTypes.cpp): every listed type
 // builds the scheme of that name from its own sub-dictionary, a wrong type or a misplaced lambda is an
-// input error naming the file, the line and the keyword (and the valid types), and a type refuses the
-// scenes it cannot run.
+// input error naming the file, the line and the keyword (and the valid types). What a type cannot run
+// beside is the check pass's (tests/case/RunCompatibilityTest.cpp).
 #include "core/Error.hpp"
 #include "integrators/EulerIntegrator.hpp"
 #include "integrators/GrootWarrenIntegrator.hpp"
@@ -64,25 +64,6 @@ TEST(IntegratorSelection, LambdaBelongsToGrootWarrenOnly) {
         }
     }
     EXPECT_THROW(readWithIntegrator("type GrootWarren; lambda 1.5;"), InputError);
-}
-
-// Each type says which scenes it cannot run, as an input error at its type keyword.
-TEST(IntegratorSelection, ShardlowRefusesTunableSlipWalls) {
-    WallList walls;
-    walls.addPlane(PlanarWallSettings{});
-    const IntegratorSettings shardlow = IntegratorSettings::parse("type Shardlow;");
-    EXPECT_NO_THROW(makeIntegrator(shardlow, walls));
-    PlanarWallSettings w;
-    w.hasTunableSlip = true;
-    walls.addPlane(w);
-    try {
-        makeIntegrator(shardlow, walls);
-        FAIL() << "Shardlow must refuse tunable-slip walls";
-    } catch (const InputError& e) {
-        EXPECT_EQ(e.keyword(), "type");
-        EXPECT_NE(std::string(e.what()).find("tunableSlip"), std::string::npos) << e.what();
-    }
-    EXPECT_NO_THROW(makeIntegrator(IntegratorSettings::parse("type GrootWarren;"), walls));
 }
 
 // The registry refuses a name twice and lists the names in order.

@@ -66,6 +66,7 @@ private:
 class PushForce : public SurfaceForce {
 public:
     explicit PushForce(std::vector<std::string>& calls) : calls_(calls) {}
+    std::string keyword() const override { return "push"; }
     std::string description() const override { return "a push"; }
     void addForces(WallStep& s, const WallShape&, const Eigen::Vector3d&) const override {
         calls_.push_back("forces");
