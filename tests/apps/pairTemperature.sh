@@ -8,7 +8,8 @@
 #     rise by A^2 / 6 (less the part neighbours do not share, A^2 k^2 <dx^2> / 12 with <dx^2> = 1/5
 #     over pairs closer than r_c), pair by that part only.
 #   - In 2-D (y inactive, two velocity components): pair = single = kT.
-# Each value within 4 standard errors of the scatter over independent snapshots.
+# Each value's standard error over independent snapshots within its budget, then the value within a
+# fixed bound of four budgets of its expectation.
 #   $1: the directory of the executables, $2: the source directory
 set -u
 src=$2
@@ -52,10 +53,16 @@ def write_case(name, mode, dimension):
     rows = pair_temperature(os.path.join(os.environ["WORK"], name), 0, SNAPSHOTS, 2, (lo[2], hi[2]), (lo[2], hi[2]), 20)
     return rows[:, 1:].mean(axis=0), rows[:, 1:].std(axis=0, ddof=1) / np.sqrt(len(rows))
 
+# Standard-error budgets over the 8 snapshots (measured 0.002-0.008 for the temperatures, 0.0005-0.0015
+# for the shared part), then a fixed bound of four budgets: 0.04 keeps pair apart from single in the
+# mode case (A^2 / 6 = 0.06 between them), 0.008 the shared part from zero.
+BUDGET = {"single": 0.01, "pair": 0.01, "shared": 0.002}
+
 def report(label, got, expected):
     (mean, error) = got
     for name, m, e, x in zip(("single", "pair", "shared"), mean, error, expected):
-        print(f"{label} {name} {m:.5f} +- {e:.5f} expected {x:.5f} {'ok' if abs(m - x) < 4 * e else 'off'}")
+        ok = e < BUDGET[name] and abs(m - x) < 4 * BUDGET[name]  # NaN fails both
+        print(f"{label} {name} {m:.5f} +- {e:.5f} expected {x:.5f} {'ok' if ok else 'off'}")
 
 report("independent", write_case("independent", 0.0, 3), (KT, KT, 0.0))
 unshared = A * A * k * k / 5 / 12
@@ -64,5 +71,5 @@ report("twoD", write_case("twoD", 0.0, 2), (KT, KT, 0.0))
 EOF
 )
 echo "$out"
-[ "$(echo "$out" | grep -c ' ok$')" -eq 9 ] || fail "every value within 4 standard errors of its expectation"
+[ "$(echo "$out" | grep -c ' ok$')" -eq 9 ] || fail "every value's error within its budget and the value within four budgets of its expectation"
 finishTests pairTemperature

@@ -203,6 +203,10 @@ void checkCaseOnThreads(const Case& cs) {
     }
     // Each particle's force within what its pairs' single-precision separations allow (typically
     // 1e-4 to 1e-3 of forces of order 10-100); a missing or doubled pair would be off by order 1-10.
+    // The budget comes from the evaluator under test, so it is itself held to a fixed cap: 0.02
+    // (measured at most 0.0084 over the cases).
+    const double widest = *std::max_element(tolerance.begin(), tolerance.end());
+    ASSERT_LT(widest, 0.02) << "the widest particle's budget";
     for (std::size_t i = 0; i < p.size(); ++i) {
         EXPECT_NEAR(p.fx[i], f[i].x(), tolerance[i]) << "particle id " << p.id[i];
         EXPECT_NEAR(p.fy[i], f[i].y(), tolerance[i]) << "particle id " << p.id[i];

@@ -3,6 +3,7 @@ text; a check whose numbers hold a NaN or a missing value (None) fails whatever 
 
     checks = Checks()
     checks.add("nu within 3 %", abs(rel) < 0.03, f"{100 * rel:+.2f} %", rel)
+    checks.bounded("nu within 3 % (error below 1 %)", rel, err, 0.01, -0.03, 0.03)  # issue 45's form
     checks.write(f)                  # 'check  PASS  nu within 3 %: +0.41 %' lines
     return checks.status()           # the script's exit status: 1 when a check failed
 """
@@ -20,6 +21,39 @@ def finite(value):
         return math.isfinite(float(value))
     except (TypeError, ValueError):
         return False
+
+
+def as_number(value):
+    """value as a float; NaN for a missing (None), empty or non-numeric value, which then fails the
+    check that reads it (arithmetic on a None or a string would raise instead)."""
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def _text(value):
+    try:
+        return f"{float(value):.4g}"
+    except (TypeError, ValueError):
+        return repr(value)
+
+
+def bounded_verdict(value, error, budget, lower=None, upper=None):
+    """issue 45's verdict on a measured value with its standard error: (passed, why). Passes when
+    every number is finite, error < budget, and lower <= value <= upper (a None bound is open)."""
+    bounds = [b for b in (lower, upper) if b is not None]
+    if not finite([value, error, budget] + bounds):
+        return False, (f"value {_text(value)}, standard error {_text(error)}, budget {_text(budget)}, bounds "
+                       f"[{_text(lower)}, {_text(upper)}]: not a finite number")
+    value, error, budget = float(value), float(error), float(budget)
+    if not error < budget:
+        return False, f"standard error {error:.4g} ABOVE its budget {budget:.4g}: too noisy to decide"
+    inside = (lower is None or value >= lower) and (upper is None or value <= upper)
+    where = " and ".join(w for w in ((f">= {lower:.4g}" if lower is not None else ""),
+                                     (f"<= {upper:.4g}" if upper is not None else "")) if w)
+    return inside, (f"{value:+.4g} {'within' if inside else 'OUTSIDE'} the bound ({where}), standard error "
+                    f"{error:.4g} below its budget {budget:.4g}")
 
 
 class Checks:
@@ -40,6 +74,16 @@ class Checks:
     def include(self, other):
         """Another Checks object's checks, after these."""
         self.rows += other.rows
+
+    def bounded(self, name, value, error, budget, lower=None, upper=None, text=""):
+        """A statistical check (issue 45), one row: first the standard error within its budget (a run
+        too noisy to decide fails, and the row names the budget), then the value within the fixed
+        bounds lower <= value <= upper (None: no bound on that side), bounds set from the budget, never
+        from the run's error. A NaN, inf, None or empty value, error, budget or bound fails. Returns
+        whether it passed."""
+        ok, verdict = bounded_verdict(value, error, budget, lower, upper)
+        shown = f"{text}; " if text else ""
+        return self.add(name, ok, f"{shown}{verdict}")
 
     def fail(self, message):
         """A failed check given by its message alone."""

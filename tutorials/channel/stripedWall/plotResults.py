@@ -6,20 +6,27 @@ it gives), the sweeps (slipTensor's results per run: sweepAngle/, and at full si
 sweepLocalSlip/, sweepHeight/, sweepHalfForce/, sweepForce/, sweepPeriod/) and the fluid at rest over
 the stripes (rest/); computes the reference with stripedSlip at the calibrated slips in the channel between the
 hydrodynamic walls; writes results.dat and stripedWall.png and exits non-zero when a check fails (the
-first fluid layer's speed and areal density at 0 and 90 degrees are written as information):
-  - b_par and b_perp (mean of the walls, from the hydrodynamic wall) within max(3 standard errors, 5 %)
-    of the reference: in the angle sweep the weighted mean of the runs that drive each, elsewhere per
-    run (gas fraction, local slip, height); and b_par - b_perp of the angle sweep, which does not
-    depend on where the wall acts;
-  - the transverse flux ratio within max(3 standard errors, 5 %) of the reference at every angle
-    between 0 and 90 and every channel height, and zero within 3 standard errors at theta 0 and 90;
+first fluid layer's speed and areal density at 0 and 90 degrees are written as information).
+Every check (issue 45) first requires the standard error of its comparison within a budget (BUDGETS:
+full size and test mode, each derived from measured errors), then holds the value to a fixed bound of
+three budgets, never widened by the run's own error:
+  - b_par and b_perp (mean of the walls, from the hydrodynamic wall) within 3 budgets of the
+    reference: in the angle sweep the weighted mean of the runs that drive each, elsewhere per run
+    (gas fraction, local slip, height); and b_par - b_perp of the angle sweep, which does not depend
+    on where the wall acts;
+  - the transverse flux ratio within 3 budgets of the reference at every angle between 0 and 90 and
+    every channel height, and zero within 3 budgets at theta 0 and 90; at theta 45 the flow turns
+    towards the stripes: the ratio above 3 budgets (at full size: the test's 800 time units cannot
+    decide it, information there);
   - the flux linear in the force: at half the force, the flux per unit force along and across the
-    stripes within 3 standard errors of the flux at the standard force (the standard force is on the
-    linear branch; twice the force is information: there inertia takes ~3 % of the flux, README);
+    stripes within 3 budgets (relative) of the flux at the standard force (twice the force is
+    information: there inertia takes ~3 % of the flux, README);
   - at the period 40 (sweepPeriod/), b_par at theta 0, b_perp at theta 90 and b_par - b_perp against
     the reference at that period, as above;
   - at rest, the layer next to the walls (within zc) holds the same density and kT over the gas and
-    the no-slip sectors, within 3 standard errors of their difference.
+    the no-slip sectors, their difference within 3 budgets of zero.
+The test mode decides every check its runs allow (the angle sweep at 0, 45 and 90 degrees and the fluid
+at rest) with the test's budgets, but the turn at theta 45 (information).
 The standard error of a comparison holds the run's, the wall position's (slip lengths) and the
 calibration's (the reference recomputed at each sector's slip +- its error).
 """
@@ -31,14 +38,56 @@ import sys
 
 import numpy as np
 
-from dpdfoam.checks import Checks, write_results
+from dpdfoam.checks import Checks, as_number, write_results
 from dpdfoam.io import latest, read_dict, read_sweep, read_table, read_text, wall_planes
 from dpdfoam.plots import label, plt, save
 from dpdfoam.stats import inverse_variance_mean
 
-RELATIVE = 0.05
 TEST_MODE = "-test" in sys.argv[1:]
-TEST_CHECKS = ("b_par (angle sweep", "at rest, density")
+# The test's 800 time units cannot decide the turn at theta 45 (its budget's bound, 3 x 0.04, lies above
+# the reference's 0.051): information there, every other check of the test's runs decided.
+TEST_INFORMATION = ("the flow turns towards the stripes",)
+# A value within BOUND budgets of its expectation (issue 45: the bound fixed by the budget).
+BOUND = 3.0
+# Standard-error budgets (issue 45), (full size, test mode): each check requires its comparison's
+# standard error below the budget, then the value within BOUND budgets. Full size from the README's
+# runs of 2026-11-27 (the wall's position adds 0.091 to every b, the calibration 0.090-0.102 to its
+# reference, mostly the no-slip sectors' b0 +- 0.10); test from its run of 2026-11-28 (800 time units;
+# its three-point calibration: wall +- 0.30, b0 +- 0.33). None: that study does not run in the test.
+BUDGETS = {
+    # full: run 0.021-0.029 (+) wall 0.091 (+) calibration 0.099 = 0.137; test: 0.096-0.116 (+) 0.304 (+) 0.33 = 0.46
+    "b, angle sweep": (0.16, 0.55),
+    # full: run 0.020-0.108 (+) wall 0.091 (+) calibration 0.090-0.102 = 0.135-0.173 (phi2, b, H and L 40)
+    "b, one run": (0.19, None),
+    # full: run 0.036 (+) calibration 0.005 = 0.036 (the wall cancels); test: 0.151 (+) 0.019 = 0.152
+    "b_par - b_perp, angle sweep": (0.05, 0.2),
+    # full: run 0.100 (+) calibration 0.033 = 0.105 (L 40)
+    "b_par - b_perp, L 40": (0.13, None),
+    # full: 0.007-0.011 at 22.5-67.5 degrees; test: 0.009 at 45, 0.018 and 0.036 at 90 and 0 (the 3400-unit
+    # runs' 0.009-0.017 x sqrt(3000 / 600 sampled) = 0.02-0.038)
+    "flux ratio, angle sweep": (0.013, 0.04),
+    # full: 0.005-0.017 (phi2, b and H)
+    "flux ratio, one run": (0.02, None),
+    # full: 0.007 (10400 time units at 45 degrees); test: as the angle sweep's ratio
+    "the flow turns": (0.01, 0.04),
+    # full: 0.012 at 0, 0.009 at 90 degrees; test: 0.036 at 0, 0.018 at 90
+    "zero flux": (0.015, 0.04),
+    # relative: full 1.4 % along, 1.6 % across (g / 2 against g)
+    "flux linear": (0.02, None),
+    # full: 0.007 (1000 time units sampled); test: 0.015 (400 sampled)
+    "at rest, density": (0.01, 0.02),
+    # full: 0.0021; test: 0.0046
+    "at rest, kT": (0.003, 0.006),
+}
+
+
+def budget(kind, test=None):
+    """The standard-error budget of a kind of check in this mode (or in the one `test` names); NaN, a
+    failed check, for a study the mode has no budget for."""
+    value = BUDGETS[kind][1 if (TEST_MODE if test is None else test) else 0]
+    return float("nan") if value is None else value
+
+
 ZC = 1.0
 PAR_PERP = (("Parallel", "b_par"), ("Perpendicular", "b_perp"))
 
@@ -92,14 +141,49 @@ def read_runs(path, offset):
     return s
 
 
-def compare(checks, label, measured, run_error, expected, calibration_error, wall_error=0.0):
-    """A check: measured within max(3 standard errors, 5 %) of expected, the errors combined."""
-    total = math.sqrt(run_error ** 2 + wall_error ** 2 + calibration_error ** 2)
-    bound = max(3.0 * total, RELATIVE * abs(expected))
-    checks.add(f"{label} within max(3 standard errors, 5 %) = {bound:.4f} of the reference {expected:.4f}",
-               abs(measured - expected) <= bound,
-               f"{measured:+.4f} +- {total:.4f} (run {run_error:.4f}, wall {wall_error:.4f}, calibration "
-               f"{calibration_error:.4f}), difference {measured - expected:+.4f}", bound)
+def compare(checks, label, measured, run_error, expected, calibration_error, wall_error, limit):
+    """A check: the comparison's standard error (the run's, the wall position's and the calibration's
+    in quadrature) below the budget `limit`, then measured within BOUND budgets of expected."""
+    m, r, x, c, w = (as_number(v) for v in (measured, run_error, expected, calibration_error, wall_error))
+    total = math.sqrt(r ** 2 + w ** 2 + c ** 2)
+    return checks.bounded(f"{label} within {BOUND:g} x {limit:g} of the reference {x:.4f} (standard error below {limit:g})",
+                          m - x, total, limit, -BOUND * limit, BOUND * limit,
+                          f"{m:+.4f} +- {total:.4f} (run {r:.4f}, wall {w:.4f}, calibration {c:.4f}), difference {m - x:+.4f}")
+
+
+def zero_flux(checks, angle, ratio, error, limit):
+    """No transverse flux where nothing breaks the symmetry (theta 0 and 90): within BOUND budgets of 0."""
+    ratio = as_number(ratio)
+    return checks.bounded(f"no transverse flux at theta {angle:g} (within {BOUND:g} x {limit:g}, standard error below "
+                          f"{limit:g})", ratio, error, limit, -BOUND * limit, BOUND * limit, f"{ratio:+.5f}")
+
+
+def turns(checks, ratio, error, limit):
+    """The flow turns towards the stripes at theta 45: the ratio above BOUND budgets."""
+    ratio = as_number(ratio)
+    return checks.bounded(f"the flow turns towards the stripes at theta 45 (ratio above {BOUND:g} x {limit:g}, standard "
+                          f"error below {limit:g})", ratio, error, limit, BOUND * limit, None, f"{ratio:+.5f}")
+
+
+def linear(checks, name, q1, e1, q2, e2, limit):
+    """The flux per unit force at g / 2 (q2) as at g (q1): their relative difference within BOUND
+    budgets (relative) of 0."""
+    q1, e1, q2, e2 = (as_number(v) for v in (q1, e1, q2, e2))
+    rel = q2 / q1 - 1.0 if q1 else float("nan")
+    se = math.hypot(e1, e2) / abs(q1) if q1 else float("nan")
+    return checks.bounded(f"flux {name} linear in the force: per unit force at g / 2 as at g, within {100 * BOUND * limit:g} % "
+                          f"(standard error below {100 * limit:g} %)", rel, se, limit, -BOUND * limit, BOUND * limit,
+                          f"{q2:.4f} against {q1:.4f}, difference {100 * rel:+.2f} +- {100 * se:.2f} %")
+
+
+def same_at_rest(checks, q, gas, gas_error, no_slip, no_slip_error, limit):
+    """At rest, quantity q within zc of the walls the same over gas and no-slip sectors: their difference
+    within BOUND budgets of 0."""
+    g, ge, n, ne = (as_number(v) for v in (gas, gas_error, no_slip, no_slip_error))
+    se = math.hypot(ge, ne)
+    return checks.bounded(f"at rest, {q} within zc of the walls the same over gas and no-slip sectors (within "
+                          f"{BOUND:g} x {limit:g}, standard error below {limit:g})", g - n, se, limit,
+                          -BOUND * limit, BOUND * limit, f"{g:.4f} against {n:.4f}, difference {g - n:+.4f} +- {se:.4f}")
 
 
 def rest_layer(path, walls, period, gas_fraction):
@@ -168,10 +252,10 @@ def layer_study(sweep, s, ref, walls, period, gas_fraction, out):
             f"upstream half, theta {a:g}: {runs[a][1][0]:+.4f} +- {runs[a][1][1]:.4f}" for a in (0.0, 90.0)]
 
 
-def anisotropy(checks, label, par, perp, ref):
+def anisotropy(checks, label, par, perp, ref, limit):
     """b_par - b_perp against the reference: it does not depend on where the wall acts."""
     compare(checks, label, par[0] - perp[0], math.hypot(par[1], perp[1]), ref["slipParallel"] - ref["slipPerpendicular"],
-            ref.error(lambda r: r["slipParallel"] - r["slipPerpendicular"]))
+            ref.error(lambda r: r["slipParallel"] - r["slipPerpendicular"]), 0.0, limit)
 
 
 def period_study(cal, sp, height, gas_fraction, checks, out, walls):
@@ -186,10 +270,10 @@ def period_study(cal, sp, height, gas_fraction, checks, out, walls):
         k = angles.index(a)
         measured[key] = (sp["b" + key][k], sp["e" + key][k])
         compare(checks, f"{name} at L {period:g}", *measured[key], ref["slip" + key],
-                ref.error(lambda r, key=key: r["slip" + key]), cal["halfWidthError"])
+                ref.error(lambda r, key=key: r["slip" + key]), cal["halfWidthError"], budget("b, one run"))
         out.append(f"{name}  {sp['b' + key][k]:.4f} +- {sp['e' + key][k]:.4f} ({ref['slip' + key]:.4f})")
     anisotropy(checks, f"b_par - b_perp at L {period:g} (the wall's position cancels)", measured["Parallel"],
-               measured["Perpendicular"], ref)
+               measured["Perpendicular"], ref, budget("b_par - b_perp, L 40"))
     layer_study("sweepPeriod", sp, ref, walls, period, gas_fraction, out)
 
 
@@ -213,21 +297,19 @@ def angle_study(cal, s, height, gas_fraction, checks, out):
         runs = np.isfinite(s["b" + key])
         mean, err = means[key] = inverse_variance_mean(s["b" + key][runs], s["e" + key][runs])
         compare(checks, f"{name} (angle sweep, weighted over {int(runs.sum())} runs)", mean, err, ref["slip" + key],
-                ref.error(lambda r: r["slip" + key]), offset_err)
+                ref.error(lambda r: r["slip" + key]), offset_err, budget("b, angle sweep"))
         out.append(f"# {name}: {mean:.4f} +- {err:.4f} (runs; wall +- {offset_err:.4f}), reference {ref['slip' + key]:.4f}")
     anisotropy(checks, "b_par - b_perp (angle sweep; the wall's position cancels)", means["Parallel"],
-               means["Perpendicular"], ref)
+               means["Perpendicular"], ref, budget("b_par - b_perp, angle sweep"))
     for k, a in enumerate(angles):
         ratio, err = s["transverseFluxRatio"][k], s["transverseFluxRatioError"][k]
         if a == 45.0:
-            checks.add("the flow turns towards the stripes at theta 45 (ratio above 3 standard errors)",
-                       ratio > 3 * err, f"{ratio:+.5f} +- {err:.5f}")
+            turns(checks, ratio, err, budget("the flow turns"))
         if a % 90 == 0:
-            checks.add(f"no transverse flux at theta {a:g} (within 3 standard errors)", abs(ratio) <= 3 * err,
-                       f"{ratio:+.5f} +- {err:.5f}")
+            zero_flux(checks, a, ratio, err, budget("zero flux"))
         else:
             compare(checks, f"transverse flux ratio at theta {a:g}", ratio, err, ref["ratio"][a],
-                    ref.error(lambda r, a=a: r["ratio"][a]))
+                    ref.error(lambda r, a=a: r["ratio"][a]), 0.0, budget("flux ratio, angle sweep"))
     return ref
 
 
@@ -238,9 +320,9 @@ def tensor_rows(cal, s, checks, out, title, parameter, references):
         where = f"{parameter} {ref.label:g}"
         for key, name in PAR_PERP:
             compare(checks, f"{name} at {where}", s["b" + key][k], s["e" + key][k], ref["slip" + key],
-                    ref.error(lambda r, key=key: r["slip" + key]), cal["halfWidthError"])
+                    ref.error(lambda r, key=key: r["slip" + key]), cal["halfWidthError"], budget("b, one run"))
         compare(checks, f"transverse flux ratio at {where}", s["transverseFluxRatio"][k], s["transverseFluxRatioError"][k],
-                ref["ratio"][45.0], ref.error(lambda r: r["ratio"][45.0]))
+                ref["ratio"][45.0], ref.error(lambda r: r["ratio"][45.0]), 0.0, budget("flux ratio, one run"))
         out.append(f"{ref.label:8g}  {s['bParallel'][k]:.4f} +- {s['eParallel'][k]:.4f} ({ref['slipParallel']:.4f})  "
                    f"{s['bPerpendicular'][k]:.4f} +- {s['ePerpendicular'][k]:.4f} ({ref['slipPerpendicular']:.4f})  "
                    f"{s['transverseFluxRatio'][k]:+.5f} +- {s['transverseFluxRatioError'][k]:.5f} ({ref['ratio'][45.0]:.5f})")
@@ -262,8 +344,7 @@ def force_study(s, k45, checks, out):
             out.append(f"{name}: {q1:.4f} +- {e1:.4f}, {q2:.4f} +- {e2:.4f} (difference {100 * (q2 / q1 - 1):+.1f} "
                        f"+- {100 * se / q1:.1f} %)")
             if factor < 1.0:
-                checks.add(f"flux {name} linear in the force: per unit force at g / 2 as at g (3 standard errors)",
-                           abs(q2 - q1) <= 3 * se, f"{q2:.4f} against {q1:.4f}, difference {q2 - q1:+.4f} +- {se:.4f}")
+                linear(checks, name, q1, e1, q2, e2, budget("flux linear"))
 
 
 def sweep_studies(cal, gas_fraction, height, checks, out):
@@ -314,14 +395,10 @@ def main():
             f"{layer[where]['density'][1]:.4f}, kT {layer[where]['kT'][0]:.4f} +- {layer[where]['kT'][1]:.4f}"
             for where in ("gas", "noSlip")]
     for q in ("density", "kT"):
-        (g, ge), (n, ne) = layer["gas"][q], layer["noSlip"][q]
-        se = math.hypot(ge, ne)
-        checks.add(f"at rest, {q} within zc of the walls the same over gas and no-slip sectors (3 standard errors)",
-                   abs(g - n) <= 3 * se, f"{g:.4f} against {n:.4f}, difference {g - n:+.4f} +- {se:.4f}")
-    # The test's short runs (800 time units, a few of the parallel plug mode's decay times) check the
-    # machinery, b_par and the density at rest; the rest is information there (README: the transverse
-    # fluxes' errors are not yet decisive, and b_perp and kT over the no-slip sectors fail at full size).
-    checks.inform(lambda name: not TEST_MODE or name.startswith(TEST_CHECKS))
+        same_at_rest(checks, q, *layer["gas"][q], *layer["noSlip"][q], budget(f"at rest, {q}"))
+    # The test's short runs (800 time units) decide every check their outputs allow with the test's
+    # budgets; the turn at theta 45 is information there (TEST_INFORMATION).
+    checks.inform(lambda name: not TEST_MODE or not name.startswith(TEST_INFORMATION))
     write_results("results.dat", out, checks)
     draw(cal, s, ref, studies, grid, near, height, gas_fraction)
     print("Written stripedWall.png and results.dat")

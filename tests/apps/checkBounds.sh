@@ -1,0 +1,148 @@
+#!/bin/bash
+# Issue 45's rule on broken inputs, on the check functions of three tutorials (no simulation, no
+# executables: plain numbers): tutorials/channel/stripedWall (the slip tensor against the continuum
+# reference, the flux's turn, zero flux, linearity in the force, the fluid at rest),
+# tutorials/channel/slipGammaFw (the slip's rise with falling gamma_fw) and
+# tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu against the
+# fluid without walls, and the missing verdict of too few super-blocks). Each check must fail for a
+# NaN, an empty or a missing value, a standard error over its budget and a value just outside its
+# fixed bound (which a standard error within budget no longer widens), and pass for a good value: the
+# full-size numbers the tutorials' READMEs record, at the full-size budgets.
+#   $1: the directory of the executables (unused), $2: the source directory
+set -u
+src=$2
+. "$src/tests/shellTestFunctions" || exit 1
+python=/usr/bin/python3
+# Required dependencies (the tutorials' scripts import them): a missing one fails the test (no skip).
+requirePython "$python" numpy matplotlib || finishTests checkBounds
+
+out=$(PYTHONPATH="$src/etc/python" "$python" - "$src" 2>&1 <<'EOF'
+import importlib.util
+import sys
+import types
+
+from dpdfoam.checks import Checks
+
+src, NAN = sys.argv[1], float("nan")
+
+
+def load(name, case):
+    """A tutorial's plotResults.py as module `name`, its directory on sys.path while it loads (the
+    lattice-wall script imports wallComparison beside it)."""
+    directory = f"{src}/tutorials/channel/{case}"
+    sys.path.insert(0, directory)
+    try:
+        spec = importlib.util.spec_from_file_location(name, f"{directory}/plotResults.py")
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+    finally:
+        sys.path.remove(directory)
+    return module
+
+
+sw, sg, lw = load("stripedWall", "stripedWall"), load("slipGammaFw", "slipGammaFw"), load("latticeWall", "poiseuille/latticeWall")
+wc = sys.modules["wallComparison"]
+wrong = 0
+
+
+def expect(what, passes, add):
+    """add(checks) adds one check or several: all must pass, or (passes False) one at least must fail."""
+    global wrong
+    checks = Checks()
+    add(checks)
+    passed = bool(checks.rows) and not checks.failures()
+    ok = passed == passes
+    wrong += not ok
+    print(f"{'ok   ' if ok else 'WRONG'} {'pass' if passes else 'fail'}  {what}" +
+          ("" if ok else "   <- " + " | ".join(checks.lines())))
+
+
+def broken(what, add, good, bound_value, noisy):
+    """good: arguments that pass; each broken variant fails: NaN, empty, missing value, the error over
+    the budget, the value just outside the bound."""
+    expect(f"{what}: good", True, lambda c: add(c, *good))
+    for name, value in (("NaN", NAN), ("empty", ""), ("missing", None)):
+        expect(f"{what}: value {name}", False, lambda c: add(c, value, *good[1:]))
+    expect(f"{what}: error NaN", False, lambda c: add(c, good[0], NAN, *good[2:]))
+    expect(f"{what}: error missing", False, lambda c: add(c, good[0], None, *good[2:]))
+    expect(f"{what}: error over its budget", False, lambda c: add(c, good[0], noisy, *good[2:]))
+    expect(f"{what}: just outside the bound", False, lambda c: add(c, bound_value, *good[1:]))
+
+
+# stripedWall. compare(checks, label, measured, run error, reference, calibration error, wall error,
+# budget): the angle sweep's b_par at full size (README 2026-11-27: 1.143 +- 0.029 against 1.0486,
+# calibration 0.098, wall 0.091), budget 0.16, bound 3 x 0.16 = 0.48.
+B = sw.budget("b, angle sweep", test=False)
+cmp = lambda c, m, e, *rest: sw.compare(c, "b_par", m, e, *rest)
+broken("stripedWall b_par", cmp, (1.143, 0.029, 1.0486, 0.098, 0.091, B), 1.0486 + 3 * B + 0.001, 0.12)
+expect("stripedWall b_par just inside the bound", True, lambda c: cmp(c, 1.0486 + 3 * B - 0.001, 0.029, 1.0486, 0.098, 0.091, B))
+# The old bound, max(3 standard errors, 5 %), let a noisy run pass further off: 0.6 from the reference
+# with a run error of 0.2 passed (bound 0.71); now it fails twice over.
+expect("stripedWall b_par: noisy and far off (passed the old bound)", False,
+       lambda c: cmp(c, 1.0486 + 0.6, 0.2, 1.0486, 0.098, 0.091, B))
+expect("stripedWall b_par: reference NaN", False, lambda c: cmp(c, 1.143, 0.029, NAN, 0.098, 0.091, B))
+expect("stripedWall b_par: calibration error missing", False, lambda c: cmp(c, 1.143, 0.029, 1.0486, None, 0.091, B))
+# The README's full-size values at the full-size budgets (reference and calibration error: stripedSlip
+# at the README's calibration), each check's largest standard error or difference.
+full = [("b, angle sweep", 0.724, 0.021, 0.6520, 0.0995, 0.091), ("b, one run", 1.318, 0.099, 1.0486, 0.0985, 0.091),
+        ("b, one run", 0.770, 0.108, 0.6521, 0.0995, 0.091), ("b, one run", 1.536, 0.062, 1.4104, 0.0981, 0.091),
+        ("b, one run", 2.340, 0.103, 2.2770, 0.0964, 0.091), ("b_par - b_perp, angle sweep", 0.419, 0.036, 0.3965, 0.0045, 0),
+        ("b_par - b_perp, L 40", 1.138, 0.100, 1.0287, 0.0332, 0), ("flux ratio, angle sweep", 0.044, 0.011, 0.0378, 0.0006, 0),
+        ("flux ratio, one run", 0.027, 0.017, 0.0161, 0.0002, 0), ("flux ratio, one run", 0.053, 0.006, 0.0396, 0.0011, 0)]
+for kind, m, e, ref, ce, we in full:
+    expect(f"stripedWall full size, {kind}: {m} +- {e} against {ref}", True,
+           lambda c: sw.compare(c, kind, m, e, ref, ce, we, sw.budget(kind, test=False)))
+Z = sw.budget("zero flux", test=False)
+broken("stripedWall zero flux at theta 90", lambda c, r, e, b: sw.zero_flux(c, 90, r, e, b), (-0.008, 0.009, Z), -3 * Z - 0.001, 0.02)
+T = sw.budget("the flow turns", test=False)
+broken("stripedWall the flow turns at theta 45", sw.turns, (0.050, 0.007, T), 3 * T - 0.001, 0.011)
+L = sw.budget("flux linear", test=False)
+lin = lambda c, q2, e2, q1, e1, b: sw.linear(c, "along the stripes", q1, e1, q2, e2, b)
+broken("stripedWall flux linear in the force", lin, (7.546, 0.088, 7.625, 0.056, L), 7.625 * (1 - 3 * L) - 0.01, 0.2)
+expect("stripedWall flux linear: flux at g zero", False, lambda c: lin(c, 7.546, 0.088, 0.0, 0.056, L))
+R = sw.budget("at rest, kT", test=False)
+rest = lambda c, g, ge, n, ne, b: sw.same_at_rest(c, "kT", g, ge, n, ne, b)
+broken("stripedWall kT at rest", rest, (1.0008, 0.0015, 1.0019, 0.0015, R), 1.0019 + 3 * R + 0.001, 0.003)
+
+# slipGammaFw. monotonic_checks(checks, label, gammas, b, errors, step budget, rise budget): the
+# full-size 2-D, 3-D and plane-near-the-row sweeps (README) at their full-size budgets.
+G = [1, 2, 4.5, 13.5]
+mono = lambda label, b, e: (lambda c: sg.monotonic_checks(c, label, G, b, e, *sg.MONOTONIC_BUDGETS[label]["full"]))
+two, two_e = [0.4850, 0.4399, 0.4047, 0.2828], [0.013, 0.023, 0.013, 0.011]
+expect("slipGammaFw 2-D full size", True, mono("2-D", two, two_e))
+expect("slipGammaFw 3-D full size (1 and 2 the same within 0.0106)", True,
+       mono("3-D", [0.3928, 0.3946, 0.3758, 0.3166], [0.0075] * 4))
+expect("slipGammaFw plane near the row full size", True,
+       mono("2-D, plane near the row", [1.909, 1.298, 0.756, 0.207], [0.029, 0.025, 0.015, 0.012]))
+step, rise = sg.MONOTONIC_BUDGETS["2-D"]["full"]
+for name, value in (("NaN", NAN), ("empty", ""), ("missing", None)):
+    expect(f"slipGammaFw 2-D: a slip {name}", False, mono("2-D", [two[0], value] + two[2:], two_e))
+    expect(f"slipGammaFw 2-D: an error {name}", False, mono("2-D", two, [two_e[0], value] + two_e[2:]))
+expect("slipGammaFw 2-D: no runs", False, mono("2-D", [], []))
+expect("slipGammaFw 2-D: a step's error over its budget", False, mono("2-D", two, [0.013, 0.035, 0.013, 0.011]))
+expect("slipGammaFw 2-D: the rise's error over its budget", False, mono("2-D", two, [0.02, 0.023, 0.013, 0.02]))
+expect("slipGammaFw 2-D: a step down just beyond 3 budgets", False,
+       mono("2-D", [0.4850, 0.4399, 0.4399 + 3 * step + 0.001, 0.2828], two_e))
+expect("slipGammaFw 2-D: the rise just short of 3 budgets", False,
+       mono("2-D", [0.2828 + 3 * rise - 0.001, 0.30, 0.29, 0.2828], two_e))
+
+# latticeWall. agreement_check(checks, name, a, b, difference, its error, budget); no_slip_check and
+# nu_check; wall_pairs with a run of too few super-blocks.
+agree = lambda c, d, s, b: wc.agreement_check(c, "nu", "mask", "lattice", d, s, b)
+P = wc.PAIR_BUDGETS["nu"]
+broken("latticeWall nu, mask and lattice walls", agree, (0.0027, 0.0027, P), 3 * P + 0.0001, 0.006)
+S = lw.SLIP_BOUND
+slip = lambda c, b, e, budget: lw.no_slip_check(c, "lower mask wall", b, e, budget)
+broken("latticeWall no slip (full size, lattice)", slip, (0.0162, 0.0091, lw.LATTICE_SLIP_BUDGET[0]), S + 0.001, 0.04)
+nu = lambda c, v, e, ref, ref_e, b: lw.nu_check(c, "lattice walls", v, e, ref, ref_e, b)
+broken("latticeWall nu against no walls (full size)", nu, (0.27376, 0.00021, 0.27490, 0.00091, 0.01), 0.27490 * 1.0301, 0.003)
+expect("latticeWall nu: nu without walls missing", False, lambda c: nu(c, 0.27376, 0.00021, None, 0.00091, 0.01))
+short = types.SimpleNamespace(too_short="runs sampled 40 blocks of 25: fewer than 5 super-blocks of 2 tau1 = 1200")
+expect("latticeWall too few super-blocks: no verdict fails", False, lambda c: lw.wall_pairs(c, [], [short] * 3, 600.0))
+print(f"{wrong} wrong")
+EOF
+)
+echo "$out"
+echo "$out" | grep -q '^0 wrong$' || fail "every broken input fails and every good value passes ($(echo "$out" | grep -c '^WRONG') wrong)"
+[ "$(echo "$out" | grep -c '^ok ')" -ge 80 ] || fail "fewer expectations ran than written"
+finishTests checkBounds
