@@ -4,6 +4,9 @@
 # changed (gamma_fw 36, the couette tutorial's calibrated wall) is caught, naming the entry. Where
 # published.dat gives particle counts, the builders make them at full size within 1 % (0/ only), and
 # a wall one cutoff deep where the paper's is 1.5 is caught, and so is a contraction of another outline.
+# The polymer channel's published cases (its table "sweeps") are built at full size with their chains:
+# each holds nChain x ChainLen beads in nChain chains and the published mobile count within 1 %; its
+# earlier default (-latticeWall: walls at +-14) is caught short of the published fluid.
 #   $1: the directory of the executables, $2: the source directory
 set -u
 bin=$1
@@ -50,5 +53,58 @@ sed -i 's/^L = 30;  H = 15;  c = 10;  h = 5;$/L = 30;  H = 15;  c = 7.5;  h = 7.
 grep -q 'c = 7.5;  h = 7.5;' "$tmp/constant/geometry/contraction.geo" || fail "the square contraction's outline line has changed"
 "$src/etc/checkPublishedCounts" "$tmp" > "$tmp/log" 2>&1
 expectError $? "$tmp/log" "MISMATCH $tmp/.: fluid" "MISMATCH $tmp/.: wall"
+rm -rf "$tmp"
+
+# The polymer channel: every published case built at full size (blockFrozenWall once, then insertChains
+# in a copy per case), its snapshot read back: the beads and chains the table gives, every bead
+# counted among the published mobile particles (within 1 %, as the count line), the walls unchanged.
+polymer="$src/tutorials/polymer/channel"
+python=${DPD_PYTHON:-/usr/bin/python3}
+requirePython "$python" h5py numpy || finishTests publishedParameters
+mobile=$(awk '$1 == "count" && $2 == "channel" && $4 == "fluid" { print $5 }' "$polymer/published.dat")
+finiteNumber "$mobile" "the polymer channel's published mobile count" || finishTests publishedParameters
+rows=$(awk '$1 == "table" { t = $2 } $1 == "row" && t == "sweeps" { print $2 "x" $3 "x" $4 }' "$polymer/published.dat")
+[ "$(echo $rows | wc -w)" -eq 6 ] || fail "the polymer channel's published.dat lists $(echo $rows | wc -w) cases, not the six published"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/publishedChains.XXXXXX")
+cp -r "$polymer/channel" "$tmp/base"
+blockFrozenWall -case "$tmp/base" > "$tmp/base/log.blockFrozenWall" 2>&1 || fail "blockFrozenWall failed on the polymer channel: $(tail -n 3 "$tmp/base/log.blockFrozenWall")"
+for row in $rows; do
+    IFS=x read -r n L beads <<< "$row"
+    [ "$beads" -eq $((n * L)) ] || fail "the polymer channel's case $n x $L lists $beads beads"
+    one="$tmp/chains${n}_length$L"
+    cp -r "$tmp/base" "$one"
+    if [ "$n" -gt 0 ]; then
+        dpdDictionary "$one/system/insertChainsDict" -entry chains -set "$n" > /dev/null
+        dpdDictionary "$one/system/insertChainsDict" -entry length -set "$L" > /dev/null
+        insertChains -case "$one" > "$one/log.insertChains" 2>&1 || { fail "insertChains failed for $n x $L: $(tail -n 3 "$one/log.insertChains")"; continue; }
+    fi
+    out=$("$python" - "$one/0/particles.h5" "$n" "$beads" "$mobile" <<'PY'
+import sys
+import h5py
+import numpy as np
+path, chains, beads, published = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+with h5py.File(path, "r") as f:
+    names = [s.decode() if isinstance(s, bytes) else str(s) for s in f.attrs["speciesNames"]]
+    frozen = np.asarray(f.attrs["speciesFrozen"]) != 0
+    species = np.asarray(f["particles/species"])
+    chain = np.asarray(f["particles/chain"]) if "particles/chain" in f else np.full(len(species), -1)
+mobile = int(np.sum(~frozen[species]))
+polymer = int(np.sum(species == names.index("polymer")))
+found = len(np.unique(chain[chain >= 0]))
+print(f"{chains} x {beads // chains if chains else 0}: mobile {mobile} (published {published}), beads {polymer}, "
+      f"chains {found}, frozen {int(np.sum(frozen[species]))}")
+ok = polymer == beads and found == chains and abs(mobile / published - 1) < 0.01
+sys.exit(0 if ok else 1)
+PY
+) || fail "the polymer channel's case $n x $L: $out (the published: $beads beads in $n chains, $mobile mobile within 1 %)"
+    echo "ok       polymer channel $out"
+done
+rm -rf "$tmp"
+# Its earlier default, the -latticeWall variant (walls at +-14, d = 28), holds too little fluid.
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/publishedCounts.XXXXXX")
+cp -r "$polymer/latticeWall" "$tmp/channel"
+grep '^count' "$polymer/published.dat" > "$tmp/published.dat"
+"$src/etc/checkPublishedCounts" "$tmp" > "$tmp/log" 2>&1
+expectError $? "$tmp/log" "MISMATCH $tmp/channel: fluid"
 rm -rf "$tmp"
 finishTests publishedParameters

@@ -1,29 +1,45 @@
 #!/usr/bin/env python3
-"""Polymer channel tutorial (docs/scenes.md scene 7): picture, results table and checks.
+"""Polymer channel tutorial (docs/scenes.md scene 7; Zhou, Liu and Chang): picture, results table and checks.
 
-Reads every case of the sweep (sweep/ or, with -lowG, sweepLowG/: runSweep's copies of channel/ and its
-sweep.dat), computes per case the flux, the centre velocity, the velocity deficit against the case
-without chains, the fitted (effective) viscosity, kT in the bulk (the bins', and from the snapshots its
-split into heat and motion neighbours share), the beads' depletion at the walls and the chain shapes, all with errors over super-blocks, draws polymerChannel[LowG].png, writes
-results[LowG].dat and exits non-zero when a check fails.
+Reads every case of the sweep (sweep/, or the variant's: sweepLowG/, sweepLatticeWall/,
+sweepLatticeWallLowG/, runSweep's copies of the case and its sweep.dat) and computes per case the
+papers' quantities, all with errors over super-blocks: the flux, the centre velocity and the velocity
+deficit against the case without chains; the profile's asymmetry u(z) - u(-z) with its noise; the
+fitted (effective) viscosity; kT in the bulk as the bins read it and as the heat (pair kT, from the
+snapshots: etc/pairTemperature.py); the density of the fluid and of the beads across the channel, the
+beads' depletion at the walls and their share within |z| <= 10 (two thirds of the half-height); the
+chains' shapes, and their extension along the flow by where they lie, the outer chains against the
+central ones (chainExtension.py). Where the case samples the paper's grid (200 x 20 bins in the z-x
+plane over the last 400 time units: paperField, paperFluid, paperBeads) the same profiles are read
+there too, as the paper reads them. Draws polymerChannel<variant>.png (with the chains at t = 0 and at
+the end), writes results<variant>.dat and exits non-zero when a check fails.
 
 Error bars. The run samples in blocks of 25 time units (test: 10), shorter than the correlation times
-of the flow and of the chains: the slowest flow mode decays in tau1 = d^2 / (pi^2 nu) (290 at d = 28,
-24 at the test's d = 8; its share dominates the flux's fluctuation without chains), and the flux and
-the chain shapes of the 90-bead chains decorrelate within ~300 (measured: their autocorrelation
-crosses zero at 250-300, and the standard error over blocks stops growing with the block length from
-~300). Consecutive sampling blocks are therefore joined into super-blocks of about 2 tau1 (600; test
-50), and every mean's standard error is the spread of its M super-block means over sqrt(M) (M = 8).
-For an exponentially correlated signal, neighbouring means of blocks 2 tau1 long are still correlated
-by ~0.3, which leaves the slowest mode's share of the error ~15 % low (wallComparison.py of
-tutorials/channel/poiseuille/latticeWall). Each error comes from M - 1 degrees of freedom, so "3 standard
-errors" is read as the Student-t quantile of the same one-sided tail probability (0.135 %) for the
-Welch-Satterthwaite degrees of freedom of the combination.
+of the flow and of the chains: the slowest flow mode decays in tau1 = d^2 / (pi^2 nu) (340 at the
+default's d = 30, 290 at the lattice-wall variant's d = 28, 24 at the test's d = 8; its share dominates
+the flux's fluctuation without chains), and the flux and the chain shapes of the 90-bead chains
+decorrelate within ~300 (measured at d = 28: their autocorrelation crosses zero at 250-300, and the
+standard error over blocks stops growing with the block length from ~300). Consecutive sampling
+blocks are therefore joined into super-blocks of about 2 tau1 (600; test 50), and every mean's
+standard error is the spread of its M super-block means over sqrt(M) (M = 5 in the default's 3000
+sampled time units, 8 in the lattice-wall variant's 4800 and in the test). For an exponentially
+correlated signal, neighbouring means of blocks 2 tau1 long are still correlated by ~0.3, which leaves
+the slowest mode's share of the error ~15 % low (wallComparison.py of
+tutorials/channel/poiseuille/latticeWall). Each error comes from M - 1 degrees of freedom, so "3
+standard errors" is read as the Student-t quantile of the same one-sided tail probability (0.135 %)
+for the Welch-Satterthwaite degrees of freedom of the combination.
+
+Bounds. A check that a difference is absent (the chains' heat, the chain-free profile's asymmetry)
+allows 3 standard errors only within a fixed budget: the allowance must itself lie within it, so that
+a noisier run fails instead of passing more easily. A check that an effect is present (the deficit's
+steps, the depletion, the outer chains' extension) needs it above 3 standard errors, which noise only
+makes harder.
 """
 import math
 import os
 import re
 import sys
+import warnings
 
 import numpy as np
 
@@ -36,15 +52,47 @@ from dpdfoam.plots import label, mark_walls, plt, save
 from dpdfoam.snapshots import snapshot_box, unwrapped_chains
 from dpdfoam.stats import Z_SIGMA, BlockMean as Stat, combined, count_weighted_mean, jackknife_error, student_t
 
+import chainExtension  # beside this script
+
 # The fluid (constant/dpdProperties): kT, a, rho, and Groot and Warren's equation of state
 # p = rho kT + alpha a rho^2 (alpha = 0.101), whose isothermal sound speed is c^2 = dp/drho = kT + 2 alpha a rho.
 KT_SET, A_FF, RHO, ALPHA_GW = 1.0, 18.75, 4.0, 0.101
 SOUND_SPEED = math.sqrt(KT_SET + 2.0 * ALPHA_GW * A_FF * RHO)
 
+# The regions across the channel, as fractions of the half-height h = d / 2 about the centre: the
+# published share of beads within |z| <= 10 (h = 15: two thirds of h); the central chains (centre
+# within h / 3) against the outer ones (beyond 2 h / 3).
+SHARE_FRACTION, CENTRAL_FRACTION, OUTER_FRACTION = 2.0 / 3.0, 1.0 / 3.0, 2.0 / 3.0
+
+# Budgets of the checks that a difference is absent (module docstring, "Bounds"): the heat the chains may
+# add to the bulk unseen, and the chain-free profile's asymmetry (its two halves' mean velocities apart,
+# over the mean velocity). The test's short runs are noisier: its budgets are wider. The halves' thermal
+# noise does not shrink with g, so at low g (U 6.7 times smaller) the symmetry budget is the test's.
+HEAT_BUDGET = {False: 0.01, True: 0.03}          # of kT_set; key: test
+SYMMETRY_BUDGET = {False: 0.01, True: 0.05}      # of U; key: test or low g
+
+
+def overlap(z, width, lo, hi):
+    """The share of each bin (centres z, width) that lies in [lo, hi]."""
+    return np.clip((np.minimum(z + 0.5 * width, hi) - np.maximum(z - 0.5 * width, lo)) / width, 0.0, 1.0)
+
 
 def bulk_kT(sums, bulk):
     """kT of the bulk bins per super-block, weighted by their particle-samples."""
     return Stat(count_weighted_mean(temperature(sums)[:, bulk], sums[:, bulk, 0]))
+
+
+def paper_grid(path):
+    """A table of the paper's 2-D grid (profileBins: columns z x density ... count) averaged over x, per z
+    bin: the density (mean over the x columns), ux and kT (weighted by the particle-samples), the count."""
+    t = read_table(path)
+    zs = np.unique(t["z"])
+    rows = [t["z"] == z for z in zs]
+    count = np.array([t["count"][r].sum() for r in rows])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        weighted = lambda name: np.array([np.nansum(t[name][r] * t["count"][r]) for r in rows]) / count  # noqa: E731
+        return {"z": zs, "count": count, "density": np.array([t["density"][r].mean() for r in rows]),
+                "ux": weighted("ux"), "kT": weighted("kT"), "nx": len(np.unique(t["x"]))}
 
 
 class Case:
@@ -61,12 +109,14 @@ class Case:
         self.fit = read_dict(latest_dir(os.path.join(path, "postProcessing/fitSlipLength/*")) + "/fit.dat")
         self.walls, self.g = tuple(self.fit["wallPosition"]), self.fit["g"]
         self.d, self.centre = self.walls[1] - self.walls[0], 0.5 * (self.walls[0] + self.walls[1])
+        self.h = 0.5 * self.d
         pp = latest_dir(os.path.join(path, "postProcessing/profileBins/*"))
         self.table = read_table(os.path.join(pp, "channelProfile.dat"))
         self.bead_table = read_table(os.path.join(pp, "beadProfile.dat")) if self.chains else None
         self.fluid_table = read_table(os.path.join(pp, "fluidProfile.dat"))
         time_dir = latest_dir(os.path.join(path, "[0-9]*"))
         self.snapshot = os.path.join(time_dir, "particles.h5")
+        self.snapshot0 = os.path.join(path, "0", "particles.h5")
         self.prof = SampledBins(os.path.join(time_dir, "sampling/channelProfile.h5"))
         self.block_time = self.prof.block_samples * interval * float(dictionary_value(control, "deltaT"))
         self.per, self.m = self.prof.layout(self.block_time, super_block)
@@ -75,10 +125,16 @@ class Case:
         self.window_start = self.end - self.m * self.super_time
         self._flow()
         self._heat()
-        self.kT_fluid = bulk_kT(SampledBins(os.path.join(time_dir, "sampling/fluidProfile.h5")).super_blocks(self.per, self.m)[0], self.bulk)
+        fluid = SampledBins(os.path.join(time_dir, "sampling/fluidProfile.h5"))
+        fluid_sums, fluid_samples = fluid.super_blocks(self.per, self.m)
+        self.kT_fluid = bulk_kT(fluid_sums, self.bulk)
+        rho_fluid = fluid.density(fluid_sums, fluid_samples)
+        self.fluid_bulk, self.fluid_near = Stat(rho_fluid[:, self.bulk].mean(axis=1)), Stat(rho_fluid[:, self.near].mean(axis=1))
         if self.chains:
             self._beads(SampledBins(os.path.join(time_dir, "sampling/beadProfile.h5")))
             self._chains(latest_dir(os.path.join(path, "postProcessing/chains/*")))
+            self._extension()
+        self._paper(control, pp)
         self._log()
 
     def _flow(self):
@@ -98,6 +154,26 @@ class Case:
         leave = leave_one_out_poiseuille(z, count, sum_u, fit_weights(self.table), self.walls, self.fit["exclude"], self.g)
         self.nu = Stat.of(self.fit["nu"], float(jackknife_error(leave[:, 0])), self.m - 1)
         self.rho_bulk = float(np.mean(self.prof.density(sums.sum(axis=0), self.m * samples)[self.bulk]))
+        self._asymmetry(z, count, sum_u)
+
+    def _asymmetry(self, z, count, sum_u):
+        """u(z) - u(-z) (about the centre) per mirrored pair of bins, with its error over the super-blocks;
+        the two halves' mean velocities apart (A = U(upper) - U(lower)); chi^2 of the pairs against zero."""
+        n = len(z)
+        upper = np.arange((n + 1) // 2, n)
+        lower = n - 1 - upper
+        if not np.allclose(z[upper] - self.centre, self.centre - z[lower]):
+            sys.exit(f"plotResults: {self.path}: channelProfile's bins are not symmetric about the channel's centre")
+        with np.errstate(invalid="ignore", divide="ignore"):
+            u = sum_u / count
+        du = u[:, upper] - u[:, lower]
+        mean, error = du.mean(axis=0), du.std(axis=0, ddof=1) / math.sqrt(self.m)
+        half = lambda k: sum_u[:, k].sum(axis=1) / count[:, k].sum(axis=1)  # noqa: E731
+        good = np.isfinite(mean) & (error > 0)
+        self.asym = {"z": z[upper] - self.centre, "du": mean, "err": error, "A": Stat(half(upper) - half(lower)),
+                     "chi2": float(np.mean((mean[good] / error[good]) ** 2)), "pairs": int(good.sum()),
+                     "rms": float(np.sqrt(np.mean(mean[good] ** 2))), "noise": float(np.sqrt(np.mean(error[good] ** 2))),
+                     "max": float(np.max(np.abs(mean[good])))}
 
     def _heat(self):
         """The bulk's kT split into heat (pair) and motion neighbours share (shared), per snapshot of the
@@ -120,6 +196,13 @@ class Case:
         self.depletion = Stat(near_rho / bulk_rho, near_rho.mean() / bulk_rho.mean())
         self.kT_beads = bulk_kT(sums, self.bulk)
         self.bead_fraction_bulk = float(bulk_rho.mean() / self.rho_bulk)
+        # The beads' share within |z| <= 2 h / 3 (10 at h = 15), bins straddling the edge by their share,
+        # and in the upper half of the channel.
+        count = sums[..., 0]
+        self.share_edge = SHARE_FRACTION * self.h
+        weight = overlap(bins.z, bins.width, self.centre - self.share_edge, self.centre + self.share_edge)
+        self.share = Stat((count * weight).sum(axis=1) / count.sum(axis=1))
+        self.upper_share = Stat(count[:, bins.z > self.centre].sum(axis=1) / count.sum(axis=1))
 
     def _chains(self, directory):
         data = np.loadtxt(os.path.join(directory, "chainStatistics.dat"), comments="#", ndmin=2)
@@ -130,6 +213,69 @@ class Case:
         # R_g^2 and span by where the chain's centre lies across the channel (the whole sampling).
         bins = np.loadtxt(os.path.join(directory, "chainBins.dat"), comments="#", ndmin=2)
         self.chain_bins = {"z": bins[:, 0], "samples": bins[:, 1], "Rg2": bins[:, 2], "spanx": bins[:, 3]}
+
+    def _extension(self):
+        """The chains' extension along the flow (span x) and R_g^2 by where their centre lies, from the
+        snapshots (chainExtension.py): the central chains (centre within h / 3 of the channel's centre)
+        against the outer ones (beyond 2 h / 3), per super-block, and binned across the channel."""
+        rows = chainExtension.case_rows(self.path, "channelProfile")
+        if rows is None:
+            sys.exit(f"plotResults: {self.path} has neither postProcessing/chainExtension nor the snapshots to measure it")
+        rows = rows[rows[:, 0] >= self.window_start]
+        k = np.minimum(np.floor((rows[:, 0] - self.window_start) / self.super_time).astype(int), self.m - 1)
+        offset = np.abs(rows[:, 2] - self.centre)
+        self.central_edge, self.outer_edge = CENTRAL_FRACTION * self.h, OUTER_FRACTION * self.h
+        regions = {"central": offset < self.central_edge, "outer": offset > self.outer_edge}
+        snapshots = len(np.unique(rows[:, 0]))
+
+        def per_block(sel, col):
+            return np.array([rows[sel & (k == j), col].mean() if np.any(sel & (k == j)) else np.nan for j in range(self.m)])
+
+        self.ext = {"snapshots": snapshots}
+        for name, sel in regions.items():
+            self.ext[name] = {"spanx": Stat(per_block(sel, 3)), "Rg2": Stat(per_block(sel, 4)),
+                              "chains": sel.sum() / max(snapshots, 1)}
+        self.ext["diff"] = Stat(per_block(regions["outer"], 3) - per_block(regions["central"], 3))
+        self.ext["ratio"] = self.ext["outer"]["spanx"].value / self.ext["central"]["spanx"].value
+        # The slope of span_x on the distance from the centre, every chain counted (what the check reads:
+        # the outer third holds few chains where the beads are depleted at the walls).
+        self.ext["slope"] = Stat([np.polyfit(offset[k == j], rows[k == j, 3], 1)[0] if np.sum(k == j) > 2 else np.nan
+                                  for j in range(self.m)])
+        # Binned by the centre (bins of 2, as chainBins), errors over the super-blocks.
+        edges = np.arange(self.walls[0], self.walls[1] + 1e-9, 2.0 if self.d > 12 else 1.0)
+        which = np.digitize(rows[:, 2], edges) - 1
+        means = np.array([[rows[(which == b) & (k == j), 3].mean() if np.any((which == b) & (k == j)) else np.nan
+                           for b in range(len(edges) - 1)] for j in range(self.m)])
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)  # bins no chain's centre reached: NaN
+            self.ext["bins"] = {"z": 0.5 * (edges[1:] + edges[:-1]), "spanx": np.nanmean(means, axis=0),
+                                "err": np.nanstd(means, axis=0, ddof=1) / np.sqrt(np.sum(np.isfinite(means), axis=0))}
+
+    def _paper(self, control, pp):
+        """The paper's grid over its window (paperField, paperFluid, paperBeads: 200 x 20 bins in the
+        z-x plane, the last 400 time units), averaged over x; None where the case has no such grid."""
+        self.paper = None
+        if not os.path.exists(os.path.join(pp, "paperField.dat")):
+            return
+        field = paper_grid(os.path.join(pp, "paperField.dat"))
+        fluid = paper_grid(os.path.join(pp, "paperFluid.dat"))
+        beads = paper_grid(os.path.join(pp, "paperBeads.dat"))
+        z, n = field["z"], field["count"]
+        up, low = z > self.centre, z < self.centre
+        bulk, near = np.abs(z - self.centre) < 0.5 * self.h, (z - self.walls[0] < 1.0) | (self.walls[1] - z < 1.0)
+        p = {"start": float(dictionary_value(control, "functions/paperField/startTime")), "nz": len(z), "nx": field["nx"],
+             "field": field, "fluid": fluid, "beads": beads,
+             "U": float(np.nansum(field["ux"] * n) / n.sum()),
+             "uc": float(np.nansum((field["ux"] * n)[np.abs(z - self.centre) < 1.0]) / n[np.abs(z - self.centre) < 1.0].sum()),
+             "A": float(np.nansum((field["ux"] * n)[up]) / n[up].sum() - np.nansum((field["ux"] * n)[low]) / n[low].sum()),
+             "kT": float(np.nansum((field["kT"] * n)[bulk]) / n[bulk].sum()),
+             "fluid_bulk": float(fluid["density"][bulk].mean()), "fluid_near": float(fluid["density"][near].mean())}
+        if self.chains:
+            nb, width = beads["count"], z[1] - z[0]
+            edge = SHARE_FRACTION * self.h
+            p["share"] = float((nb * overlap(z, width, self.centre - edge, self.centre + edge)).sum() / nb.sum())
+            p["near_bulk"] = float(beads["density"][near].mean() / beads["density"][bulk].mean())
+        self.paper = p
 
     def _log(self):
         self.steps = self.seconds = self.rate = float("nan")
@@ -169,22 +315,36 @@ def sweeps(cases):
     return ref[0], chain_cases, n_sweep, l_sweep
 
 
-def heat_checks(checks, chain_cases, ref):
+def heat_checks(checks, chain_cases, ref, budget):
     """The chains add no heat. The bins' kT of the bulk rises with chains at the published g, but what
     rises is motion neighbours share (etc/pairTemperature.py; README): the heat, the kT of the
     neighbours' relative velocities, is what the thermostat holds. Without chains the flow's viscous
     heating raises it by H0 = pair kT0 - kT_set; the chains slow the flow and carry part of the
     stress, so the heat of a chain case lies between the set kT and the chain-free flow's:
-    kT_set - 3 sigma < pair kT < pair kT0 + 3 sigma (Student-t, combined errors for the upper bound)."""
+    kT_set - 3 sigma < pair kT < pair kT0 + 3 sigma (Student-t, combined errors for the upper bound),
+    each allowance within the budget (module docstring, "Bounds")."""
     for c in chain_cases:
         above, below = c.kT_pair.value - ref.kT_pair.value, c.kT_pair.value - KT_SET
         _, allow_up, dof_up = combined(c.kT_pair.term(), ref.kT_pair.term())
         allow_down = student_t(Z_SIGMA, c.kT_pair.dof) * c.kT_pair.error
-        checks.add(f"the chains add no heat to the bulk, {c.label}: kT_set - 3 sigma < pair kT < pair kT(no chains) + 3 sigma",
-                   above < allow_up and below > -allow_down,
+        checks.add(f"the chains add no heat to the bulk, {c.label}: kT_set - 3 sigma < pair kT < pair kT(no chains) + 3 sigma, "
+                   f"each 3 sigma within {budget:g}",
+                   above < allow_up and below > -allow_down and max(allow_up, allow_down) <= budget,
                    f"pair kT {c.kT_pair.fmt(5)}: {above:+.5f} from no chains (3 sigma {allow_up:.5f}, dof {dof_up:.0f}), "
                    f"{below:+.5f} from kT_set (3 sigma {allow_down:.5f}); bins' kT {c.kT.value - ref.kT.value:+.5f} "
-                   f"from no chains, of which shared motion {c.kT_shared.value - ref.kT_shared.value:+.5f}")
+                   f"from no chains, of which shared motion {c.kT_shared.value - ref.kT_shared.value:+.5f}",
+                   c.kT_pair.value, c.kT_pair.error, ref.kT_pair.error)
+
+
+def symmetry_check(checks, ref, budget):
+    """Without chains the channel is symmetric: the two halves' mean velocities agree within 3 standard
+    errors of their difference, that allowance within the budget (of U)."""
+    a = ref.asym["A"]
+    rel, allow = a.value / ref.U.value, student_t(Z_SIGMA, a.dof) * a.error / ref.U.value
+    checks.add(f"the profile without chains is symmetric: |U(upper half) - U(lower half)| / U < 3 sigma, 3 sigma within {budget:g}",
+               abs(rel) < allow and allow <= budget,
+               f"U(upper) - U(lower) = {a.fmt(5)} = {rel:+.5f} U, 3 sigma = {allow:.5f} U; bins u(z) - u(-z): chi2/dof "
+               f"{ref.asym['chi2']:.2f} over {ref.asym['pairs']} pairs", a.value, a.error)
 
 
 def deficit_checks(checks, n_sweep, l_sweep):
@@ -205,18 +365,39 @@ def deficit_checks(checks, n_sweep, l_sweep):
                        f"(sigma {sigma:.4f}, dof {dof:.0f})")
 
 
+def extension_checks(checks, chain_cases):
+    """The chains near the walls, in the strongest shear, are more extended along the flow than those
+    about the centre, where the shear vanishes: the slope of span_x on the distance of the chain's centre
+    from the channel's centre (every chain of every snapshot, fitted per super-block) above 3 standard
+    errors. The outer third against the central third (the papers' comparison) is reported beside it:
+    where the beads are depleted at the walls the outer third holds few chains, too few for a check."""
+    for c in chain_cases:
+        s, e = c.ext["slope"], c.ext
+        allow = student_t(Z_SIGMA, s.dof) * s.error
+        checks.add(f"the chains' extension along the flow grows towards the walls, {c.label}: slope of span_x on |z_c| > 3 sigma",
+                   s.value > allow,
+                   f"slope {s.fmt(4)}, 3 sigma = {allow:.4f}; span_x outer (|z_c| > {c.outer_edge:.3g}) {e['outer']['spanx'].fmt(3)}, "
+                   f"central (|z_c| < {c.central_edge:.3g}) {e['central']['spanx'].fmt(3)}", s.value, s.error)
+
+
+def variant(argv):
+    """The variant's suffix (results<suffix>.dat, polymerChannel<suffix>.png, sweep<suffix>/) and name."""
+    lattice, low_g = "-latticeWall" in argv, "-lowG" in argv
+    suffix = ("LatticeWall" if lattice else "") + ("LowG" if low_g else "")
+    name = " ".join(n for n, on in (("lattice-wall variant", lattice), ("low-g", low_g)) if on)
+    return suffix, name
+
+
 def main():
     test = "-test" in sys.argv[1:]
-    low_g = "-lowG" in sys.argv[1:]
-    sweep_dir = "sweepLowG" if low_g else "sweep"
-    results = "resultsLowG.dat" if low_g else "results.dat"
-    picture = "polymerChannelLowG.png" if low_g else "polymerChannel.png"
+    suffix, name = variant(sys.argv[1:])
+    sweep_dir, results, picture = f"sweep{suffix}", f"results{suffix}.dat", f"polymerChannel{suffix}.png"
     # Super-blocks (module docstring): ~2 tau1, 600 time units at full size, 50 in the test.
     super_block = 50.0 if test else 600.0
 
     sweep = read_sweep(os.path.join(sweep_dir, "sweep.dat"))
-    cases = [Case(os.path.join(sweep_dir, name), n, L, super_block)
-             for name, n, L in zip(sweep["case"], sweep["chains"], sweep["length"])]
+    cases = [Case(os.path.join(sweep_dir, case), n, L, super_block)
+             for case, n, L in zip(sweep["case"], sweep["chains"], sweep["length"])]
     ref, chain_cases, n_sweep, l_sweep = sweeps(cases)
     too_few = [c.label for c in cases if c.m < 4]
     if too_few:
@@ -229,7 +410,7 @@ def main():
         c.uc_deficit = 1.0 - c.uc.value / ref.uc.value
 
     checks = Checks()
-    heat_checks(checks, chain_cases, ref)
+    heat_checks(checks, chain_cases, ref, HEAT_BUDGET[test])
     # Beads depleted at the walls: bead density within one cutoff of a wall over the bulk's, below 1 by
     # more than 3 standard errors (of the ratio over the super-blocks).
     for c in chain_cases:
@@ -237,39 +418,65 @@ def main():
         checks.add(f"beads depleted at the walls, {c.label}: 1 - rho_near / rho_bulk > 3 sigma", 1.0 - c.depletion.value > allow,
                    f"rho_near / rho_bulk = {c.depletion.fmt(4)}, 1 - ratio = {1 - c.depletion.value:.4f}, 3 sigma = {allow:.4f}")
     deficit_checks(checks, n_sweep, l_sweep)
+    symmetry_check(checks, ref, SYMMETRY_BUDGET[test or "-lowG" in sys.argv[1:]])
+    extension_checks(checks, chain_cases)
 
-    write_results(results, results_lines(cases, ref, test, low_g), checks)
-    plot(picture, cases, ref, n_sweep, l_sweep, low_g)
+    write_results(results, results_lines(cases, ref, test, name), checks)
+    plot(picture, cases, ref, n_sweep, l_sweep, name)
     print(f"Written {picture} and {results}")
     return checks.status()
 
 
 def case_lines(c):
     """A case's block of results.dat."""
+    a = c.asym
     lines = ["", f"case {c.label}  (nChain {c.chains}, ChainLen {c.length}, beads {c.beads}; {c.path})",
              f"  U              {c.U.fmt(4)}", f"  uc             {c.uc.fmt(4)}",
              f"  deficit        {c.deficit:.4f} +- {c.deficit_error:.4f}   (centre velocity: {c.uc_deficit:.4f})",
+             f"  asymmetry      U(upper half) - U(lower half) {a['A'].fmt(4)} ({a['A'].value / c.U.value:+.4f} U); "
+             f"u(z) - u(-z) over {a['pairs']} pairs of bins: rms {a['rms']:.4f}, its noise {a['noise']:.4f}, "
+             f"largest {a['max']:.4f}, chi2/dof {a['chi2']:.2f}",
              f"  nu             {c.nu.value:.4f} +- {c.nu.error:.4f}   (fit chi2/dof {c.fit.get('chi2PerDof', float('nan')):.1f})",
-             f"  kT bulk        {c.kT.fmt(5)}   (channel mean {c.kT_mean:.5f})", f"  kT fluid bulk  {c.kT_fluid.fmt(5)}",
+             f"  kT bulk        {c.kT.fmt(5)}   (bins; channel mean {c.kT_mean:.5f})", f"  kT fluid bulk  {c.kT_fluid.fmt(5)}",
              f"  kT split       pair (heat) {c.kT_pair.fmt(5)}, shared by neighbours {c.kT_shared.fmt(5)}, "
-             f"single {c.kT_single.fmt(5)}   ({c.snapshots} snapshots)"]
+             f"single {c.kT_single.fmt(5)}   ({c.snapshots} snapshots)",
+             f"  fluid density  bulk {c.fluid_bulk.fmt(4)}, within 1 of a wall {c.fluid_near.fmt(4)}"]
     if c.chains:
+        e = c.ext
         lines += [f"  kT beads bulk  {c.kT_beads.fmt(5)}",
                   f"  bead density   bulk {c.bead_bulk.fmt(4)}, within 1 of a wall {c.bead_near.fmt(4)}; near/bulk {c.depletion.fmt(4)}",
+                  f"  bead share     within |z| <= {c.share_edge:.3g}: {c.share.fmt(4)} (uniform {c.share_edge / c.h:.4f}); "
+                  f"upper half {c.upper_share.fmt(4)}",
                   f"  Rg2            {c.Rg2.fmt(2)}   (R_g {math.sqrt(c.Rg2.value):.3f})", f"  Ree2           {c.Ree2.fmt(1)}",
-                  f"  Reex2          {c.Reex2.fmt(1)}", f"  spanx          {c.spanx.fmt(3)}"]
+                  f"  Reex2          {c.Reex2.fmt(1)}", f"  spanx          {c.spanx.fmt(3)}",
+                  f"  extension      span_x outer (|z_c| > {c.outer_edge:.3g}) {e['outer']['spanx'].fmt(3)}, central "
+                  f"(|z_c| < {c.central_edge:.3g}) {e['central']['spanx'].fmt(3)}: ratio {e['ratio']:.3f}, slope on |z_c| "
+                  f"{e['slope'].fmt(4)}; R_g^2 outer "
+                  f"{e['outer']['Rg2'].fmt(2)}, central {e['central']['Rg2'].fmt(2)}; chains per snapshot {e['outer']['chains']:.1f} "
+                  f"outer, {e['central']['chains']:.1f} central ({e['snapshots']} snapshots)"]
+    if c.paper:
+        p = c.paper
+        line = (f"  paper's grid   {p['nz']} x {p['nx']} (z x), t {p['start']:g}-{c.end:g}: U {p['U']:.4f}, uc {p['uc']:.4f}, "
+                f"U(upper) - U(lower) {p['A']:+.4f}, kT bulk {p['kT']:.5f}, fluid density bulk {p['fluid_bulk']:.4f} "
+                f"(within 1 of a wall {p['fluid_near']:.4f})")
+        if c.chains:
+            line += f", bead share within |z| <= {c.share_edge:.3g} {p['share']:.4f}, bead near/bulk {p['near_bulk']:.4f}"
+        lines.append(line)
     return lines + [f"  Re {c.reynolds:.0f}  Ma {c.mach:.3f}",
                     f"  run            {c.particles} particles, {c.steps} steps in {c.seconds:.0f} s, {c.rate:.3e} particle-steps/s"]
 
 
 def table_line(c):
-    """A case's row of the table (NaN where a case without chains has no beads or chains)."""
+    """A case's row of the table (NaN where a case without chains has no beads or chains, or a case no
+    paper's grid)."""
     pair = lambda s: [s.value, s.error]  # noqa: E731
-    chains = ([*pair(c.depletion), *pair(c.Rg2), *pair(c.Ree2), *pair(c.Reex2), *pair(c.spanx)] if c.chains
-              else [float("nan")] * 10)
+    nan = float("nan")
+    chains = ([*pair(c.depletion), *pair(c.Rg2), *pair(c.Ree2), *pair(c.Reex2), *pair(c.spanx)] if c.chains else [nan] * 10)
     row = ([c.chains, c.length, c.beads, *pair(c.U), *pair(c.uc), c.deficit, c.deficit_error, *pair(c.nu), *pair(c.kT),
-            *pair(c.kT_fluid)] + (pair(c.kT_beads) if c.chains else [float("nan")] * 2) + [*pair(c.kT_pair), *pair(c.kT_shared)]
-           + chains + [c.reynolds, c.mach, c.rate, c.seconds])
+            *pair(c.kT_fluid)] + (pair(c.kT_beads) if c.chains else [nan] * 2) + [*pair(c.kT_pair), *pair(c.kT_shared)]
+           + chains + [c.reynolds, c.mach, c.rate, c.seconds, *pair(c.asym["A"]), *pair(c.fluid_bulk), *pair(c.fluid_near)]
+           + ([*pair(c.share), *pair(c.ext["outer"]["spanx"]), *pair(c.ext["central"]["spanx"])] if c.chains else [nan] * 6)
+           + ([c.paper["U"], c.paper["A"], c.paper.get("share", nan)] if c.paper else [nan] * 3))
     return "table " + c.label.replace(" ", "_") + " " + " ".join(f"{v:.6g}" for v in row)
 
 
@@ -285,29 +492,38 @@ def same_beads_lines(cases):
             a, b = sorted(pair, key=lambda c: -c.chains)
             lines.append(f"beads {beads}: {a.label} | {b.label}: deficit {a.deficit:.4f} +- {a.deficit_error:.4f} | "
                          f"{b.deficit:.4f} +- {b.deficit_error:.4f}; nu {a.nu.value:.4f} | {b.nu.value:.4f}; "
-                         f"near/bulk {a.depletion.value:.3f} | {b.depletion.value:.3f}; Rg2 {a.Rg2.value:.1f} | {b.Rg2.value:.1f}; "
-                         f"spanx {a.spanx.value:.2f} | {b.spanx.value:.2f}; kT {a.kT.value:.4f} | {b.kT.value:.4f}")
+                         f"near/bulk {a.depletion.value:.3f} | {b.depletion.value:.3f}; share {a.share.value:.3f} | {b.share.value:.3f}; "
+                         f"Rg2 {a.Rg2.value:.1f} | {b.Rg2.value:.1f}; spanx {a.spanx.value:.2f} | {b.spanx.value:.2f}; "
+                         f"kT {a.kT.value:.4f} | {b.kT.value:.4f}")
     return lines
 
 
-def results_lines(cases, ref, test, low_g):
+def results_lines(cases, ref, test, name):
     c0 = cases[0]
     lines = [f"# FENE chains in Poiseuille flow between frozen walls (docs/scenes.md scene 7){' [test]' if test else ''}"
-             f"{' [low-g variant]' if low_g else ''}",
+             f"{f' [{name}]' if name else ''}",
              f"# d = {c0.d:g}, g = {c0.g:g}; sampled {c0.start:g}-{c0.end:g}; errors: standard errors over "
              f"{c0.m} super-blocks of {c0.super_time:g} time units",
              "# U: mean velocity of all mobile particles (flux / (rho d)); uc: velocity within 1 of the centre;",
-             "# deficit: 1 - U / U(no chains); nu: fitSlipLength's parabola (effective viscosity), jackknife error;",
+             "# deficit: 1 - U / U(no chains); asymmetry: U(upper half) - U(lower half) and u(z) - u(-z) per pair of bins",
+             "#   (rms, its noise = the rms of the pairs' standard errors, largest, chi2/dof against zero);",
+             "# nu: fitSlipLength's parabola (effective viscosity), jackknife error;",
              "# kT: bulk (central half of the channel), all mobile particles (fluid and beads) and the beads alone;",
              "# kT split (etc/pairTemperature.py, snapshots): pair = the neighbours' relative velocities (heat),",
              "#   shared = <dv_i . dv_j> / 3 over neighbours (motion they share), single = <dv^2> / 3;",
              "# near/bulk: bead density within 1 of a wall over the bead density of the central half;",
-             "# Rg2, Ree2, Reex2 (<R_ee,x^2>), spanx (max - min bead x, the extension along the flow): chain means",
+             "# bead share: the beads within two thirds of the half-height of the centre (|z| <= 10 at d = 30);",
+             "# Rg2, Ree2, Reex2 (<R_ee,x^2>), spanx (max - min bead x, the extension along the flow): chain means;",
+             "# extension: span_x of the chains whose centre lies beyond 2/3 of the half-height (outer) and within 1/3",
+             "#   (central), from the snapshots (chainExtension.py);",
+             *(["# paper's grid: the 2-D bins of the paper's window averaged along x (no error bar of its own: the window",
+                "#   is ~1.2 tau1; the rows above give the errors);"] if c0.paper else []),
              f"# Re = uc d / nu; Ma = uc / c, c = sqrt(kT + 2 alpha a rho) = sqrt(1 + 2 x {ALPHA_GW} x {A_FF:g} x {RHO:g}) = {SOUND_SPEED:.3f}"]
     lines += [line for c in cases for line in case_lines(c)]
     lines += ["", "# table: case nChain ChainLen beads U U_err uc uc_err deficit deficit_err nu nu_err kT kT_err kTfluid "
               "kTfluid_err kTbeads kTbeads_err kTpair kTpair_err kTshared kTshared_err nearOverBulk err Rg2 err Ree2 err "
-              "Reex2 err spanx err Re Ma particleSteps/s seconds"] + [table_line(c) for c in cases]
+              "Reex2 err spanx err Re Ma particleSteps/s seconds asymmetry err fluidBulk err fluidNear err share err "
+              "spanxOuter err spanxCentral err paperU paperAsymmetry paperShare"] + [table_line(c) for c in cases]
     return lines + same_beads_lines(cases) + [
         "", f"# viscous heating of the bulk without chains (pair kT): H0 = pair kT0 - kT_set = {ref.kT_pair.value - KT_SET:+.5f}",
         f"# cost of the bonds: particle-steps/s without chains {ref.rate:.3e}; "
@@ -315,94 +531,146 @@ def results_lines(cases, ref, test, low_g):
 
 
 def draw_profiles(ax, cases, ref, colour):
-    """Velocity, density, kT (all mobile particles, the fluid, the beads), bead density and R_g^2 across
-    the channel, one colour per case; the walls dotted, the central half's edges dashed."""
+    """Velocity, density (all mobile particles, the fluid), kT (all, the fluid, the beads), bead density,
+    the asymmetry and the chains by where they lie, across the channel, one colour per case; the walls
+    dotted, the central half's edges dashed. The paper's grid (its window) dotted over the long window."""
     for c in cases:
         t, col = c.table, colour[c.label]
         ax[0, 0].errorbar(t["z"], t["ux"], yerr=t["uxErr"], fmt="-", color=col, lw=1.2, label=f"{c.label}: U {c.U.value:.3f}")
-        ax[0, 1].plot(t["z"], t["density"], "-", color=col, lw=1.2, label=c.label)
+        ax[0, 1].plot(t["z"], t["density"], "-", color=col, lw=1.2, label=f"{c.label}: all")
+        ax[0, 1].plot(c.fluid_table["z"], c.fluid_table["density"], "--", color=col, lw=1.0, label=f"{c.label}: fluid")
         ax[0, 2].plot(t["z"], t["kT"], "-", color=col, lw=1.2, label=f"{c.label}: bulk {c.kT.value:.4f}")
         # The bulk's heat (pair kT, docs/analysis.md 5.5) over the central half: what the check reads.
         ax[0, 2].plot([c.centre - 0.25 * c.d, c.centre + 0.25 * c.d], [c.kT_pair.value] * 2, "--", color=col, lw=1.0,
                       label=f"{c.label}: heat (pair kT) {c.kT_pair.value:.4f}")
         ax[0, 3].plot(c.fluid_table["z"], c.fluid_table["kT"], "-", color=col, lw=1.2, label=f"{c.label} fluid")
+        a = c.asym
+        ax[1, 1].plot(a["z"], a["du"], "-", color=col, lw=1.0, label=f"{c.label}: A {a['A'].value:+.3f} +- {a['A'].error:.3f}")
+        ax[1, 1].fill_between(a["z"], -3 * a["err"], 3 * a["err"], color=col, alpha=0.12, lw=0)
+        if c.paper:
+            p = c.paper["field"]
+            ax[0, 0].plot(p["z"], p["ux"], ":", color=col, lw=1.0)
         if c.chains:
-            b, cb = c.bead_table, c.chain_bins
+            b, cb, e = c.bead_table, c.chain_bins, c.ext["bins"]
             ax[0, 3].plot(b["z"][b["count"] > 0], b["kT"][b["count"] > 0], "--", color=col, lw=1.0, label=f"{c.label} beads")
             ax[1, 0].errorbar(b["z"], b["density"], yerr=b["densityErr"], fmt="-", color=col, lw=1.2,
-                              label=f"{c.label}: near/bulk {c.depletion.value:.3f}")
-            ax[1, 3].plot(cb["z"][cb["samples"] > 0], cb["Rg2"][cb["samples"] > 0], "o-", color=col, ms=3, label=c.label)
-    for a, title, ylabel in ((ax[0, 0], "velocity (fluid and beads)", "u_x"),
-                             (ax[0, 1], "density (fluid and beads)", "number density"),
+                              label=f"{c.label}: near/bulk {c.depletion.value:.3f}, share {c.share.value:.3f}")
+            if c.paper:
+                ax[1, 0].plot(c.paper["beads"]["z"], c.paper["beads"]["density"], ":", color=col, lw=1.0)
+            ax[1, 2].plot(cb["z"][cb["samples"] > 0], cb["Rg2"][cb["samples"] > 0], "o-", color=col, ms=3, label=c.label)
+            ok = np.isfinite(e["spanx"])
+            ax[1, 3].errorbar(e["z"][ok], e["spanx"][ok], yerr=e["err"][ok], fmt="o-", color=col, ms=3,
+                              label=f"{c.label}: outer / central {c.ext['ratio']:.2f}")
+    share = next((c.share_edge for c in cases if c.chains), None)
+    dotted = "; dotted: the paper's grid and window" if ref.paper else ""
+    for a, title, ylabel in ((ax[0, 0], f"velocity (fluid and beads){dotted}", "u_x"),
+                             (ax[0, 1], "density: all mobile (solid), the fluid (dashed)", "number density"),
                              (ax[0, 2], "kT about the local flow (fluid and beads); dashed: the bulk's heat", "kT"),
                              (ax[0, 3], "kT of the fluid (solid) and of the beads (dashed)", "kT"),
-                             (ax[1, 0], "bead density", "bead number density"),
-                             (ax[1, 3], "R_g^2 by where the chain's centre lies", "<R_g^2>")):
+                             (ax[1, 0], f"bead density{dotted}; dashed: |z| = {share:.3g}"
+                              if share else "bead density", "bead number density"),
+                             (ax[1, 2], "R_g^2 by where the chain's centre lies (chainStatistics)", "<R_g^2>"),
+                             (ax[1, 3], "extension along x (span) by where the chain's centre lies", "span_x")):
         label(a, title, "z", ylabel, legend=7)
         mark_walls(a, ref.walls)
-    mark_walls([ax[0, 2], ax[0, 3], ax[1, 0]], (ref.centre - 0.25 * ref.d, ref.centre + 0.25 * ref.d), color="k", lw=0.6, ls="--")
+    label(ax[1, 1], "asymmetry u(z) - u(-z); shaded: 3 standard errors", "|z| (distance from the centre)", "u(z) - u(-z)", legend=7)
+    ax[1, 1].axhline(0.0, color="k", lw=0.6)
+    mark_walls([ax[0, 2], ax[0, 3]], (ref.centre - 0.25 * ref.d, ref.centre + 0.25 * ref.d), color="k", lw=0.6, ls="--")
+    if share:
+        mark_walls(ax[1, 0], (ref.centre - share, ref.centre + share), color="k", lw=0.6, ls="--")
+        c = next(c for c in cases if c.chains)
+        mark_walls(ax[1, 3], (c.centre - c.outer_edge, c.centre - c.central_edge, c.centre + c.central_edge, c.centre + c.outer_edge),
+                   color="k", lw=0.6, ls="--")
     for a in (ax[0, 2], ax[0, 3]):
         a.axhline(KT_SET, color="k", lw=0.8)
         a.set_ylim(0.97, 1.12)
-    ax[1, 3].set_yscale("log")
+    ax[1, 2].set_yscale("log")
 
 
 def draw_sweeps(ax, cases, ref, n_sweep, l_sweep, colour):
     """Chain size against nChain and ChainLen, the deficit against the beads, the start-up."""
-    for a, series, key, xlabel in ((ax[1, 1], n_sweep, "chains", "nChain"), (ax[1, 2], l_sweep, "length", "ChainLen")):
+    for a, series, key, xlabel in ((ax[2, 0], n_sweep, "chains", "nChain"), (ax[2, 1], l_sweep, "length", "ChainLen")):
         s = [c for c in series if c.chains]
         x = [getattr(c, key) for c in s]
         for get, fmt, name in ((lambda c: c.Rg2, "o-", "R_g = sqrt<R_g^2>"), (lambda c: c.Ree2, "s-", "sqrt<R_ee^2>")):
             a.errorbar(x, [math.sqrt(get(c).value) for c in s], yerr=[0.5 * get(c).error / math.sqrt(get(c).value) for c in s],
                        fmt=fmt, label=name)
         a.errorbar(x, [c.spanx.value for c in s], yerr=[c.spanx.error for c in s], fmt="^-", label="extension along x (span)")
+        a.errorbar(x, [c.ext["outer"]["spanx"].value for c in s], yerr=[c.ext["outer"]["spanx"].error for c in s], fmt="v--",
+                   label="span, outer chains")
+        a.errorbar(x, [c.ext["central"]["spanx"].value for c in s], yerr=[c.ext["central"]["spanx"].error for c in s], fmt="d--",
+                   label="span, central chains")
         label(a, f"chain size against {xlabel} ({'ChainLen' if key == 'chains' else 'nChain'} "
                  f"{s[0].length if key == 'chains' else s[0].chains})", xlabel, "length", legend=8)
     for series, name, marker in ((n_sweep, "nChain sweep", "o-"), (l_sweep, "ChainLen sweep", "s--")):
-        ax[2, 0].errorbar([c.beads for c in series], [c.deficit for c in series], yerr=[c.deficit_error for c in series],
+        ax[2, 2].errorbar([c.beads for c in series], [c.deficit for c in series], yerr=[c.deficit_error for c in series],
                           fmt=marker, label=name)
         for c in series[1:]:
-            ax[2, 0].annotate(c.label, (c.beads, c.deficit), fontsize=8, xytext=(4, -10), textcoords="offset points")
-    label(ax[2, 0], "velocity deficit", "beads (nChain x ChainLen)", "flux deficit 1 - U / U(no chains)", legend=8)
+            ax[2, 2].annotate(c.label, (c.beads, c.deficit), fontsize=8, xytext=(4, -10), textcoords="offset points")
+    label(ax[2, 2], "velocity deficit", "beads (nChain x ChainLen)", "flux deficit 1 - U / U(no chains)", legend=8)
     for c in cases:  # the log's mean velocity of the mobile particles
         if len(c.history[0]):
-            ax[2, 1].plot(*c.history, "-", color=colour[c.label], lw=1, label=c.label)
-    ax[2, 1].axvspan(ref.window_start, ref.end, color="0.9", label="sampled")
-    label(ax[2, 1], "start-up (the run's log)", "time", "mean velocity of the mobile particles", legend=7)
+            ax[2, 3].plot(*c.history, "-", color=colour[c.label], lw=1, label=c.label)
+    ax[2, 3].axvspan(ref.window_start, ref.end, color="0.9", label="sampled")
+    if ref.paper:
+        ax[2, 3].axvspan(ref.paper["start"], ref.end, color="0.75", label="the paper's window")
+    label(ax[2, 3], "start-up (the run's log)", "time", "mean velocity of the mobile particles", legend=7)
 
 
-def draw_chains(a, show):
-    """The chains of a case, x-z, each unwrapped from its bond vectors with its centre in the box."""
-    lo, hi = snapshot_box(show.snapshot)
+def draw_chains(a, show, snapshot):
+    """The chains of a case in a snapshot, x-z, each unwrapped from its bond vectors with its centre in the box."""
+    lo, hi = snapshot_box(snapshot)
     length = hi[0] - lo[0]
-    for k, (c, p) in enumerate(sorted(unwrapped_chains(show.snapshot).items())):
+    for k, (c, p) in enumerate(sorted(unwrapped_chains(snapshot).items())):
         shift = length * np.floor((p[:, 0].mean() - lo[0]) / length)  # the chain's centre into the box
         a.plot(p[:, 0] - shift, p[:, 2], "-", color=plt.cm.tab20(k % 20), lw=0.8)
         a.plot(p[:, 0] - shift, p[:, 2], ".", color=plt.cm.tab20(k % 20), ms=2.5)
     a.axvline(lo[0], color="k", lw=0.6); a.axvline(hi[0], color="k", lw=0.6)
     for zw in show.walls:
         a.axhline(zw, color="gray", ls=":")
-    label(a, f"{show.label}: the chains at t = {os.path.basename(os.path.dirname(show.snapshot))}, x-z projection, "
-             "one colour per chain", "x (each chain unwrapped from its bond vectors, its centre in the box; box edges marked)", "z")
+    label(a, f"{show.label}: the chains at t = {os.path.basename(os.path.dirname(snapshot))}, x-z projection, one colour per chain",
+          "x (each chain unwrapped from its bond vectors, its centre in the box; box edges marked)", "z")
     a.set_aspect("equal", adjustable="datalim")
 
 
-def plot(path, cases, ref, n_sweep, l_sweep, low_g):
+def draw_bead_map(fig, a, case):
+    """The beads' density on the paper's grid (z-x) over its window."""
+    path = os.path.join(latest_dir(os.path.join(case.path, "postProcessing/profileBins/*")), "paperBeads.dat")
+    t = read_table(path)
+    zs, xs = np.unique(t["z"]), np.unique(t["x"])
+    grid = np.full((len(zs), len(xs)), np.nan)
+    grid[np.searchsorted(zs, t["z"]), np.searchsorted(xs, t["x"])] = t["density"]
+    dz, dx = zs[1] - zs[0], xs[1] - xs[0]
+    im = a.imshow(grid, origin="lower", aspect="auto", cmap="viridis",
+                  extent=[xs[0] - 0.5 * dx, xs[-1] + 0.5 * dx, zs[0] - 0.5 * dz, zs[-1] + 0.5 * dz])
+    fig.colorbar(im, ax=a, label="bead density")
+    label(a, f"{case.label}: bead density on the paper's grid ({len(zs)} x {len(xs)}, z x), t {case.paper['start']:g}-{case.end:g}",
+          "x", "z")
+
+
+def plot(path, cases, ref, n_sweep, l_sweep, name):
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, len(cases)))
     colour = {c.label: colours[k] for k, c in enumerate(cases)}
-    fig = plt.figure(figsize=(22, 15))
-    grid = fig.add_gridspec(3, 4)
+    chained = [c for c in cases if c.chains]
+    show = max(chained, key=lambda c: (c.length, c.beads))      # the longest chains
+    most = max(chained, key=lambda c: (c.chains, c.beads))      # the most chains
+    maps = bool(show.paper)
+    fig = plt.figure(figsize=(22, 25 if maps else 20))
+    grid = fig.add_gridspec(5 if maps else 4, 4)
     ax = np.empty((3, 4), dtype=object)
     for i in range(3):
         for j in range(4):
-            if not (i == 2 and j == 3):
-                ax[i, j] = fig.add_subplot(grid[i, j] if not (i == 2 and j == 2) else grid[2, 2:])
+            ax[i, j] = fig.add_subplot(grid[i, j])
     draw_profiles(ax, cases, ref, colour)
     draw_sweeps(ax, cases, ref, n_sweep, l_sweep, colour)
-    draw_chains(ax[2, 2], max((c for c in cases if c.chains), key=lambda c: (c.length, c.beads)))
-    fig.suptitle(f"FENE chains in Poiseuille flow, d = {ref.d:g}, g = {ref.g:g}{' (low-g variant)' if low_g else ''}: "
+    draw_chains(fig.add_subplot(grid[3, 0:2]), show, show.snapshot0)
+    draw_chains(fig.add_subplot(grid[3, 2:4]), show, show.snapshot)
+    if maps:
+        draw_bead_map(fig, fig.add_subplot(grid[4, 0:2]), show)
+        draw_bead_map(fig, fig.add_subplot(grid[4, 2:4]), most)
+    fig.suptitle(f"FENE chains in Poiseuille flow, d = {ref.d:g}, g = {ref.g:g}{f' ({name})' if name else ''}: "
                  f"no chains U = {ref.U.value:.3f}, Re = {ref.reynolds:.0f}, Ma = {ref.mach:.2f}")
-    save(fig, path, dpi=90, rect=(0, 0, 1, 0.97))
+    save(fig, path, dpi=80, rect=(0, 0, 1, 0.98))
 
 
 if __name__ == "__main__":
