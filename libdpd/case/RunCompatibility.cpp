@@ -22,26 +22,27 @@ const Refusal* firstRefusal(const Capabilities& c, const Features& present) {
     return nullptr;
 }
 
+// "A, B and C" (lastJoin " and ") or "A, B or C" (" or ").
+std::string listed(const std::vector<std::string>& names, const char* lastJoin) {
+    std::string list;
+    for (std::size_t k = 0; k < names.size(); ++k)
+        list += (k == 0 ? "" : (k + 1 == names.size() ? lastJoin : ", ")) + names[k];
+    return list;
+}
+
 // "the run on 2 ranks and wall 'top' (tunableSlip)": the parts that bring the refused features.
 std::string bringing(const std::vector<RunPart>& parts, const Features& refused) {
     std::vector<std::string> names;
     for (const RunPart& p : parts)
         if (p.capabilities.features.sharesAny(refused)) names.push_back(p.name);
-    std::string list;
-    for (std::size_t k = 0; k < names.size(); ++k)
-        list += (k == 0 ? "" : (k + 1 == names.size() ? " and " : ", ")) + names[k];
-    return list;
+    return listed(names, " and ");
 }
 
 std::string insteadOf(const RunPart& part, const Features& present) {
     std::vector<std::string> fit;
     for (const RunPart& a : part.alternatives)
         if (!firstRefusal(a.capabilities, present)) fit.push_back(a.name);
-    if (fit.empty()) return {};
-    std::string list;
-    for (std::size_t k = 0; k < fit.size(); ++k)
-        list += (k == 0 ? "" : (k + 1 == fit.size() ? " or " : ", ")) + fit[k];
-    return ": use " + list;
+    return fit.empty() ? std::string() : ": use " + listed(fit, " or ");
 }
 
 }  // namespace

@@ -28,21 +28,20 @@ PairKernelFunction pairKernelFor(const PairForceParameters& params) {
     });
 }
 
+constexpr unsigned kAllTerms = kConservativeTerm | kDissipativeTerm | kRandomTerm;
+
 // The terms the integrators ask for: the whole force (with or without its conservative term), and
 // the conservative and dissipative terms alone. Null: no term left to compute.
 PairKernelFunction pairKernelForTerms(unsigned terms, const PairForceParameters& params) {
     switch (terms) {
     case 0u: return nullptr;
-    case kConservativeTerm | kDissipativeTerm | kRandomTerm:
-        return pairKernelFor<kConservativeTerm | kDissipativeTerm | kRandomTerm>(params);
+    case kAllTerms: return pairKernelFor<kAllTerms>(params);
     case kDissipativeTerm | kRandomTerm: return pairKernelFor<kDissipativeTerm | kRandomTerm>(params);
     case kConservativeTerm: return pairKernelFor<kConservativeTerm>(params);
     case kDissipativeTerm: return pairKernelFor<kDissipativeTerm>(params);
     default: throw std::invalid_argument("System::computeForces: no pair loop for this set of terms");
     }
 }
-
-constexpr unsigned kAllTerms = kConservativeTerm | kDissipativeTerm | kRandomTerm;
 
 // Adds the seconds from construction to destruction to *total, when total is set.
 class ScopedTimer {
