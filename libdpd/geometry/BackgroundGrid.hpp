@@ -30,7 +30,14 @@ struct BackgroundGrid {
     }
     // The cell holding a point, wrapped periodically into the grid.
     std::array<int, 3> cellOf(const Eigen::Vector3d& r) const;
-    static int wrapIndex(int i, int count) { return ((i % count) + count) % count; }
+    // Per particle and step in the wall passes: the usual index, at most one box away, wraps without a
+    // division.
+    static int wrapIndex(int i, int count) {
+        if (i >= 0 && i < count) return i;
+        if (i < 0 && i >= -count) return i + count;
+        if (i >= count && i < 2 * count) return i - count;
+        return ((i % count) + count) % count;
+    }
     // Volume (area in 2-D) of one cell: the product over the varying axes of the box.
     double cellMeasure(const Box& box) const;
 };

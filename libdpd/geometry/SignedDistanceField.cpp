@@ -75,14 +75,17 @@ SurfaceDistance SignedDistanceField::at(const Eigen::Vector3d& r) const {
     }
     double d = 0.0;
     Eigen::Vector3d n(0, 0, 0);
-    for (int corner = 0; corner < 8; ++corner) {
-        const int cx = corner & 1, cy = (corner >> 1) & 1, cz = (corner >> 2) & 1;
-        const double w = (cx ? t[0] : 1.0 - t[0]) * (cy ? t[1] : 1.0 - t[1]) * (cz ? t[2] : 1.0 - t[2]);
-        if (w == 0.0) continue;
-        const Node& node = nodes_[grid_.index(cx ? i1[0] : i0[0], cy ? i1[1] : i0[1], cz ? i1[2] : i0[2])];
-        d += w * node.distance;
-        n += w * Eigen::Vector3d(node.normal[0], node.normal[1], node.normal[2]);
-    }
+    // The corners in the order x fastest; along an axis of one cell only the first (the other weighs 0).
+    const int cornersY = grid_.n[1] == 1 ? 1 : 2, cornersZ = grid_.n[2] == 1 ? 1 : 2;
+    for (int cz = 0; cz < cornersZ; ++cz)
+        for (int cy = 0; cy < cornersY; ++cy)
+            for (int cx = 0; cx < 2; ++cx) {
+                const double w = (cx ? t[0] : 1.0 - t[0]) * (cy ? t[1] : 1.0 - t[1]) * (cz ? t[2] : 1.0 - t[2]);
+                if (w == 0.0) continue;
+                const Node& node = nodes_[grid_.index(cx ? i1[0] : i0[0], cy ? i1[1] : i0[1], cz ? i1[2] : i0[2])];
+                d += w * node.distance;
+                n += w * Eigen::Vector3d(node.normal[0], node.normal[1], node.normal[2]);
+            }
     const double norm = n.norm();
     return {d, norm > 0.0 ? Eigen::Vector3d(n / norm) : Eigen::Vector3d::Zero()};
 }

@@ -30,6 +30,8 @@ public:
     SurfaceDistance at(const Eigen::Vector3d& r) const;
     double distance(const Eigen::Vector3d& r) const { return at(r).distance; }
 
+    // The distance tabulated at a grid cell's centre (BackgroundGrid::index).
+    float tabulatedDistance(std::size_t cell) const { return nodes_[cell].distance; }
     const BackgroundGrid& grid() const { return grid_; }
     double band() const { return band_; }
 

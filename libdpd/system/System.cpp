@@ -157,6 +157,7 @@ void System::sortByCell(SortForces forces) {
     forcesLeftBySort_ = forces == SortForces::Leave;
     cellsFitPositions_ = true;
     movedAfterSort_.clear();
+    if (!inStep_) walls.recordPositions(particles, frozenOfSpecies_);
 }
 
 void System::exchangeWithNeighbours() {
@@ -252,13 +253,17 @@ WallCounters System::applyWalls() {
 }
 
 WallCounters System::afterMove(SortForces forces) {
+    inStep_ = true;
     advanceClock();
     const WallCounters counters = applyWalls();
     sortByCell(forces);
     return counters;
 }
 
-void System::endStep() { completeWalls(); }
+void System::endStep() {
+    completeWalls();
+    inStep_ = false;
+}
 
 void System::completeWalls() {
     dropGhosts();
@@ -276,6 +281,7 @@ void System::dropGhosts() {
     rotation_ = domain_->dropGhosts(particles, cells_);
     ghostsHeld_ = false;
     cellsFitPositions_ = false;
+    if (!inStep_) walls.recordPositions(particles, frozenOfSpecies_);
 }
 
 std::size_t System::countMobile() const {

@@ -147,6 +147,9 @@ private:
     CellList cells_;
     std::shared_ptr<const SlabDomain> domain_;
     bool ghostsHeld_ = false;  // the particles hold the neighbours' ghosts (from sortByCell to dropGhosts)
+    // Between afterMove and endStep. A reorder outside a step has the walls record the particles'
+    // positions again, in their new order (WallShape::recordPositions).
+    bool inStep_ = false;
     std::size_t rotation_ = 0;  // one process's order of the particles is [rotation_, n) then [0, rotation_)
     PairRandom random_;
     std::vector<std::uint8_t> frozenOfSpecies_;

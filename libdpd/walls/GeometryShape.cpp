@@ -31,8 +31,14 @@ double probeSpacingOf(const BackgroundGrid& g) {
 
 }  // namespace
 
+// The step the clearance covers: a tenth of a cutoff (the band is two). At dt 0.04 and kT 1 a particle
+// moves 0.04 along an axis in a step on average; the few that move further are looked at one by one.
+constexpr double kClearedStepInBands = 0.05;
+
 GeometryShape::GeometryShape(SignedDistanceField field)
-    : field_(std::move(field)), probeSpacing_(probeSpacingOf(field_->grid())) {}
+    : field_(std::move(field)),
+      probeSpacing_(probeSpacingOf(field_->grid())),
+      clearance_(DistanceClearance(*field_, kClearedStepInBands * field_->band())) {}
 
 GeometryShape::GeometryShape(std::shared_ptr<const Dictionary> geometryDict) : geometryDict_(std::move(geometryDict)) {}
 
@@ -61,18 +67,32 @@ void GeometryShape::markFlowAxes(const Box& box, std::array<bool, 3>& varies) co
 
 std::uint32_t GeometryShape::reflectionStream() const { return kStreamGeometryWall; }
 
-void GeometryShape::recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozen) {
-    std::uint64_t maxId = 0;
-    for (const std::uint64_t id : p.id) maxId = std::max(maxId, id);
-    if (previous_.size() < 3 * (maxId + 1)) previous_.resize(3 * (maxId + 1), 0.0);
+void GeometryShape::recordPositions(const Particles& p, const std::vector<std::uint8_t>& /*frozenOfSpecies*/) {
     const long n = static_cast<long>(p.size());
+    startX_.resize(p.size());
+    startY_.resize(p.size());
+    startZ_.resize(p.size());
+    startId_.resize(p.size());
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
-        if (frozen[p.species[i]]) continue;
-        double* r = &previous_[3 * p.id[i]];
-        r[0] = p.rx[i];
-        r[1] = p.ry[i];
-        r[2] = p.rz[i];
+        startX_[i] = p.rx[i];
+        startY_[i] = p.ry[i];
+        startZ_[i] = p.rz[i];
+        startId_[i] = p.id[i];
+    }
+}
+
+void GeometryShape::markWithin(const Particles& p, long begin, long end, double reach, std::uint8_t* near) const {
+    const Eigen::Vector3d& span = clearance_->span();
+    // The interpolated distance is a weighted mean of the table's: rounding may take it a few ulps
+    // below their least.
+    const double clear = reach + 1e-9 * (1.0 + std::abs(reach));
+    for (long i = begin; i < end; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i);
+        const Eigen::Vector3d r(p.rx[k], p.ry[k], p.rz[k]);
+        const bool shortStep = startInOrder(p, k) && std::abs(r.x() - startX_[k]) <= span.x() &&
+                               std::abs(r.y() - startY_[k]) <= span.y() && std::abs(r.z() - startZ_[k]) <= span.z();
+        near[i - begin] = !(shortStep && clearance_->clearanceAt(r) > clear);
     }
 }
 
@@ -118,9 +138,7 @@ Eigen::Vector3d GeometryShape::returnPoint(const Entry& entry, const Eigen::Vect
 
 ShapeCrossing GeometryShape::crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const {
     const Eigen::Vector3d end(p.rx[i], p.ry[i], p.rz[i]);
-    const std::uint64_t id = p.id[i];
-    const bool known = 3 * id + 2 < previous_.size();
-    const Eigen::Vector3d start = known ? Eigen::Vector3d(previous_[3 * id], previous_[3 * id + 1], previous_[3 * id + 2]) : end;
+    const Eigen::Vector3d start = startInOrder(p, i) ? Eigen::Vector3d(startX_[i], startY_[i], startZ_[i]) : end;
     const Entry entry = findEntry(start, minimumImage(end - start, box), atEnd);
     if (!entry.found) return {};
     return {true, returnPoint(entry, end, box), entry.atFluidPoint.normal};

@@ -10,6 +10,7 @@
 // the particle would have stepped right over it. The mirror plane is the surface's tangent plane on
 // the side the particle came from, so a particle past the middle of a thin feature still goes back
 // the way it came instead of out through the far side.
+#include "geometry/DistanceClearance.hpp"
 #include "geometry/SignedDistanceField.hpp"
 #include "walls/WallShape.hpp"
 
@@ -31,8 +32,13 @@ public:
     std::string description() const override;
     double signedDistance(const Eigen::Vector3d& r) const override { return field().distance(r); }
     SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return field().at(r); }
+    // A particle is near unless its step's start is known, the step is short and the clearance around
+    // where it ends exceeds the reach: one lookup in a small table for most particles.
+    void markWithin(const Particles& p, long begin, long end, double reach, std::uint8_t* near) const override;
     ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const override;
-    // Remembers where every mobile particle stands (by id): the start of the next step's path.
+    // Remembers where every particle stands, in the particles' order, read straight through by the
+    // next step's reflections (System records again after any reorder outside a step). A particle
+    // whose id differs there has no known start: its path is taken to be its end point.
     void recordPositions(const Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies) override;
     // The flow may vary along every active axis the field resolves.
     void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;
@@ -47,13 +53,17 @@ private:
     };
     // Where the path from `from` by `delta` first enters the solid, if it does.
     Entry findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta, SurfaceDistance& atEnd) const;
+    // Whether the ordered copy holds particle i's start.
+    bool startInOrder(const Particles& p, std::size_t i) const { return i < startId_.size() && startId_[i] == p.id[i]; }
     // Where a particle whose path entered the solid at `entry` and ended at `end` goes back.
     Eigen::Vector3d returnPoint(const Entry& entry, const Eigen::Vector3d& end, const Box& box) const;
 
     std::shared_ptr<const Dictionary> geometryDict_;  // set while not built on a box
     std::optional<SignedDistanceField> field_;
     double probeSpacing_ = 0.0;     // half the smallest varying grid cell
-    std::vector<double> previous_;  // 3 per particle id: the start of the current step
+    std::optional<DistanceClearance> clearance_;
+    std::vector<double> startX_, startY_, startZ_;  // the start of the current step, per particle
+    std::vector<std::uint64_t> startId_;            // and whose it is
 };
 
 }  // namespace dpd

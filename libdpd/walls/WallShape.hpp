@@ -41,7 +41,8 @@ public:
     // The distance and the unit normal into the fluid (a zero normal where the shape cannot tell).
     virtual SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const = 0;
     // For particles begin..end, whether each may lie less than `reach` in front of the surface or
-    // behind it (near[i - begin]): passes over the particles look one by one only at those.
+    // behind it, or have stepped through such a place (near[i - begin]): passes over the particles
+    // look one by one only at those.
     virtual void markWithin(const Particles&, long begin, long end, double /*reach*/, std::uint8_t* near) const {
         std::fill(near, near + (end - begin), std::uint8_t{1});
     }
@@ -52,8 +53,9 @@ public:
     virtual bool returnsAlong(int /*axis*/) const { return true; }
     // The position a returned particle is put at (a plane wraps its mirror image into the box at once).
     virtual Eigen::Vector3d placed(const Eigen::Vector3d& back, const Box&) const { return back; }
-    // Before the first step and after every completed step: a shape that follows particles' paths
-    // remembers where they stand, the start of the next step's path.
+    // Before the first step, after every completed step and whenever the particles are reordered
+    // outside a step: a shape that follows particles' paths remembers where they stand, in their
+    // order, the start of the next step's path.
     virtual void recordPositions(const Particles&, const std::vector<std::uint8_t>& /*frozenOfSpecies*/) {}
     // Marks the axes along which the shape makes the mean flow vary (the run monitor's local flow).
     virtual void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const = 0;

@@ -30,4 +30,11 @@ BenchmarkScene makeChainsScene(std::size_t particles, double a, const Communicat
 // for about `particles` particles (walls included), a 44-bin profile across z sampled every step.
 BenchmarkScene makeChannelScene(std::size_t particles);
 
+// Flow through grains: a cube holding about `particles` fluid particles (the fluid scene's: rho 3,
+// a 25, gamma 4.5) in its pores, half of it solid (discs of a square lattice about 8 cutoffs apart,
+// an image mask extruded along y, distance field of cells 1/8 cutoff), frozen particles at the
+// same density one cutoff deep in the grains, a bounce layer 0.1 thick, body force 0.01 along x, an
+// x-z grid of bins sampled every fifth step. Its rate counts the fluid particles, as a run's log does.
+BenchmarkScene makeGeometryScene(std::size_t particles);
+
 }  // namespace dpd

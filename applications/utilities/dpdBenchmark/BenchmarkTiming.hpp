@@ -19,7 +19,8 @@ struct BenchmarkSettings {
 
 struct BenchmarkResult {
     std::string scene;
-    std::size_t particles = 0;
+    std::size_t particles = 0;  // mobile: the rates count these
+    std::size_t frozen = 0;     // frozen particles held besides (walls, grains)
     int threads = 1;          // per rank
     int ranks = 1;            // MPI ranks (mpirun -np); particles are those of every rank together
     double rate = 0.0;        // particle-steps per second, best segment, wall clock

@@ -46,8 +46,8 @@ std::vector<std::string> parseScenes(const std::string& text) {
     std::stringstream in(text);
     std::string item;
     while (std::getline(in, item, ','))
-        if (item == "fluid" || item == "channel" || item == "chains") scenes.push_back(item);
-        else throw std::invalid_argument("-scenes: unknown scene '" + item + "' (expected fluid, chains or channel)");
+        if (item == "fluid" || item == "channel" || item == "chains" || item == "geometry") scenes.push_back(item);
+        else throw std::invalid_argument("-scenes: unknown scene '" + item + "' (expected fluid, chains, channel or geometry)");
     return scenes;
 }
 
@@ -61,17 +61,18 @@ std::string waitPolicyLine() {
 
 std::string tableHeader() {
     return "# dpdBenchmark: particle-steps/s (best of the timed segments), fractions of the step by phase, bytes\n"
-           "# per particle. rate: wall clock; cpuRate: per CPU second x threads; spread: worst/best segment - 1;\n"
+           "# per particle. particles: the mobile ones, which the rates count; frozen: wall or grain particles held\n"
+           "# besides. rate: wall clock; cpuRate: per CPU second x threads; spread: worst/best segment - 1;\n"
            "# steal: share of the best segment's CPU time the hypervisor gave to other guests (shared machine).\n" +
            waitPolicyLine() +
-           "# scene    particles threads ranks  rate       cpuRate    spread  steal   ms/step   pairs neighb  exch  walls  integ  sampl  bytes/p  kT\n";
+           "# scene    particles  frozen threads ranks  rate       cpuRate    spread  steal   ms/step   pairs neighb  exch  walls  integ  sampl  bytes/p  kT\n";
 }
 
 std::string tableRow(const dpd::BenchmarkResult& r) {
     char line[256];
     std::snprintf(line, sizeof line,
-                  "%-9s %9zu %7d %5d  %9.3e  %9.3e  %6.3f  %6.3f  %8.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %7.1f  %.3f\n",
-                  r.scene.c_str(), r.particles, r.threads, r.ranks, r.rate, r.cpuRate, r.spread, r.steal, r.msPerStep,
+                  "%-9s %9zu %7zu %7d %5d  %9.3e  %9.3e  %6.3f  %6.3f  %8.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %5.3f  %7.1f  %.3f\n",
+                  r.scene.c_str(), r.particles, r.frozen, r.threads, r.ranks, r.rate, r.cpuRate, r.spread, r.steal, r.msPerStep,
                   r.pairs, r.neighbours, r.exchange, r.walls, r.integration, r.sampling, r.bytesPerParticle, r.kT);
     return line;
 }
@@ -107,7 +108,7 @@ int main(int argc, char** argv) {
             ("particles,n", po::value<std::string>(&particles)->default_value("32000,256000"),
              "particle counts, comma-separated (e.g. 32000,256000,1000000); per rank under mpirun")
             ("threads", po::value<std::string>(&threads)->default_value("1,2"), "OpenMP thread counts, comma-separated")
-            ("scenes", po::value<std::string>(&scenes)->default_value("fluid,channel"), "fluid, chains (the fluid with 10 % of it in chains of 30) and/or channel")
+            ("scenes", po::value<std::string>(&scenes)->default_value("fluid,channel,geometry"), "fluid, chains (the fluid with 10 % of it in chains of 30), channel and/or geometry (the fluid through grains)")
             ("steps", po::value<int>(&settings.steps)->default_value(100), "steps per timed segment")
             ("segments", po::value<int>(&settings.segments)->default_value(3), "timed segments (the best counts)")
             ("warmup", po::value<int>(&settings.warmup)->default_value(10), "untimed steps first")
@@ -140,7 +141,8 @@ int main(int argc, char** argv) {
         const auto sceneNames = parseScenes(scenes);
         if (world.parallel())
             for (const std::string& name : sceneNames)
-                if (name == "channel") throw std::invalid_argument("-scenes: the channel does not run on several ranks (fluid and chains do)");
+                if (name == "channel" || name == "geometry")
+                    throw std::invalid_argument("-scenes: the " + name + " scene does not run on several ranks (fluid and chains do)");
 
         // The first rank prints; the others time their slabs beside it.
         std::ostream& out = std::cout;
@@ -151,8 +153,9 @@ int main(int argc, char** argv) {
             for (std::size_t n : counts) {
                 const dpd::BenchmarkScene scene =
                     name == "fluid"    ? dpd::makeFluidScene(n, a, dimension, world)
-                    : name == "chains" ? dpd::makeChainsScene(n, a, world)
-                                       : dpd::makeChannelScene(n);
+                    : name == "chains"  ? dpd::makeChainsScene(n, a, world)
+                    : name == "channel" ? dpd::makeChannelScene(n)
+                                        : dpd::makeGeometryScene(n);
                 for (int t : threadCounts) {
                     const std::string row = tableRow(dpd::timeScene(scene, t, settings));
                     if (root) out << row << std::flush;
