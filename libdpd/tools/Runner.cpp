@@ -177,7 +177,7 @@ public:
         sys.sortByCell();
         if (!restartForces) sys.computeForces();
         sys.dropGhosts();
-        totalParticles_ = static_cast<double>(sys.sumOverRanks(static_cast<long>(sys.particles.size())));
+        mobileParticles_ = static_cast<double>(sys.sumOverRanks(static_cast<long>(sys.countMobile())));
         printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes,
                     model.inputNotes);
         log_.flush();  // the set-up shows in a log file at once, not with the first report
@@ -236,7 +236,7 @@ private:
         }
         const double total = std::chrono::duration<double>(Clock::now() - t0).count();
         log_ << "\nRun finished: " << nSteps << " steps in " << std::setprecision(4) << total << " s, "
-             << std::setprecision(4) << (total > 0 ? totalParticles_ * nSteps / total : 0.0)
+             << std::setprecision(4) << (total > 0 ? mobileParticles_ * nSteps / total : 0.0)
              << " particle-steps/s\nEnd\n";
     }
 
@@ -259,7 +259,7 @@ private:
                  << sys.bondPotential->maxLength() << "\n";
         log_ << "    ExecutionTime = " << std::setprecision(5) << elapsed << " s   steps/s = " << std::setprecision(4)
              << stepsPerSecond << "   particle-steps/s = " << std::setprecision(4)
-             << stepsPerSecond * totalParticles_ << "   time left = " << clockText(stepsLeft / stepsPerSecond)
+             << stepsPerSecond * mobileParticles_ << "   time left = " << clockText(stepsLeft / stepsPerSecond)
              << "\n\n";
         log_.flush();
     }
@@ -322,7 +322,9 @@ private:
     std::string caseDir_;
     std::ostream& log_;
     Snapshot lastGood_;
-    double totalParticles_ = 0.0;  // on every rank together
+    // On every rank together. The rates count the particles that move, as dpdBenchmark does: frozen wall
+    // particles are held besides (the header's Particles line says how many).
+    double mobileParticles_ = 0.0;
 };
 
 }  // namespace
