@@ -29,16 +29,16 @@ double probeSpacingOf(const BackgroundGrid& g) {
     return spacing == 0.0 ? 0.5 * g.spacing.minCoeff() : spacing;
 }
 
-}  // namespace
-
 // The step the clearance covers: a tenth of a cutoff (the band is two). At dt 0.04 and kT 1 a particle
 // moves 0.04 along an axis in a step on average; the few that move further are looked at one by one.
 constexpr double kClearedStepInBands = 0.05;
 
+}  // namespace
+
 GeometryShape::GeometryShape(SignedDistanceField field)
-    : field_(std::move(field)),
+    : field_(std::make_shared<const SignedDistanceField>(std::move(field))),
       probeSpacing_(probeSpacingOf(field_->grid())),
-      clearance_(DistanceClearance(*field_, kClearedStepInBands * field_->band())) {}
+      clearance_(std::make_shared<const DistanceClearance>(*field_, kClearedStepInBands * field_->band())) {}
 
 GeometryShape::GeometryShape(std::shared_ptr<const Dictionary> geometryDict) : geometryDict_(std::move(geometryDict)) {}
 
@@ -50,6 +50,10 @@ const SignedDistanceField& GeometryShape::field() const {
 std::shared_ptr<WallShape> GeometryShape::builtOn(const ShapeBuildContext& c) const {
     if (field_) return nullptr;
     return std::make_shared<GeometryShape>(readSolidRegion(*geometryDict_, c.caseDir, c.box, c.cutoff).distance);
+}
+
+std::shared_ptr<WallShape> GeometryShape::ownCopy() const {
+    return field_ ? std::make_shared<GeometryShape>(*this) : nullptr;
 }
 
 std::string GeometryShape::description() const {

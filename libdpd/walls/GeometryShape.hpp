@@ -15,7 +15,6 @@
 #include "walls/WallShape.hpp"
 
 #include <memory>
-#include <optional>
 
 namespace dpd {
 
@@ -44,6 +43,8 @@ public:
     void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;
     std::uint32_t reflectionStream() const override;
     std::shared_ptr<WallShape> builtOn(const ShapeBuildContext& c) const override;
+    // A copy with its own record of the starts (the field and the clearances shared).
+    std::shared_ptr<WallShape> ownCopy() const override;
 
 private:
     struct Entry {
@@ -59,9 +60,9 @@ private:
     Eigen::Vector3d returnPoint(const Entry& entry, const Eigen::Vector3d& end, const Box& box) const;
 
     std::shared_ptr<const Dictionary> geometryDict_;  // set while not built on a box
-    std::optional<SignedDistanceField> field_;
+    std::shared_ptr<const SignedDistanceField> field_;
     double probeSpacing_ = 0.0;     // half the smallest varying grid cell
-    std::optional<DistanceClearance> clearance_;
+    std::shared_ptr<const DistanceClearance> clearance_;
     std::vector<double> startX_, startY_, startZ_;  // the start of the current step, per particle
     std::vector<std::uint64_t> startId_;            // and whose it is
 };

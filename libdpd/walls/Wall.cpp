@@ -122,12 +122,15 @@ void Wall::completeCrossing(Particles& p, std::size_t i, const DeferredCrossing&
     setVelocity(p, i, rule_->completed(velocityOf(p, i), velocity_));
 }
 
-std::shared_ptr<Wall> Wall::builtOn(const ShapeBuildContext& c) const {
-    std::shared_ptr<WallShape> built = shape_->builtOn(c);
-    if (!built) return nullptr;
+std::shared_ptr<Wall> Wall::withShape(std::shared_ptr<WallShape> shape) const {
+    if (!shape) return nullptr;
     auto wall = std::make_shared<Wall>(*this);
-    wall->shape_ = std::move(built);
+    wall->shape_ = std::move(shape);
     return wall;
 }
+
+std::shared_ptr<Wall> Wall::builtOn(const ShapeBuildContext& c) const { return withShape(shape_->builtOn(c)); }
+
+std::shared_ptr<Wall> Wall::ownCopy() const { return withShape(shape_->ownCopy()); }
 
 }  // namespace dpd

@@ -57,8 +57,12 @@ public:
     void completeCrossing(Particles& p, std::size_t i, const DeferredCrossing& d, const Box& box) const;
     // A wall whose shape is built on the run's box, copied with that shape; null when it needs none.
     std::shared_ptr<Wall> builtOn(const ShapeBuildContext& c) const;
+    // A copy with its shape's own record of the run (WallShape::ownCopy); null when the shape keeps none.
+    std::shared_ptr<Wall> ownCopy() const;
 
 private:
+    // This wall with another shape; null for a null shape.
+    std::shared_ptr<Wall> withShape(std::shared_ptr<WallShape> shape) const;
     // Applies the rule to mobile particle i; adds to the counts.
     void reflectParticle(WallStep& s, std::uint32_t index, std::size_t i, WallCount& counts) const;
 

@@ -77,6 +77,19 @@ std::vector<long> WallList::assignFrozenVelocities(Particles& p, const std::vect
     return carried;
 }
 
+WallList::WallList(const WallList& other) {
+    walls_.reserve(other.walls_.size());
+    for (const auto& w : other.walls_) {
+        std::shared_ptr<Wall> own = w->ownCopy();
+        walls_.push_back(own ? own : w);
+    }
+}
+
+WallList& WallList::operator=(const WallList& other) {
+    if (this != &other) *this = WallList(other);
+    return *this;
+}
+
 WallList WallList::builtOn(const ShapeBuildContext& c) const {
     WallList built;
     for (const auto& w : walls_) {

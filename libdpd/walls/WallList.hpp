@@ -27,6 +27,14 @@ struct WallCounters {
 
 class WallList {
 public:
+    WallList() = default;
+    // A copy holds its own copy of every wall whose shape keeps a record of the run (Wall::ownCopy)
+    // and shares the rest: two systems copied from one step apart.
+    WallList(const WallList& other);
+    WallList& operator=(const WallList& other);
+    WallList(WallList&&) = default;
+    WallList& operator=(WallList&&) = default;
+
     void add(std::shared_ptr<Wall> wall) { walls_.push_back(std::move(wall)); }
     // Adds the planar wall of these settings (makePlanarWall).
     void addPlane(const PlanarWallSettings& settings);

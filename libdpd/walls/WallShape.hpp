@@ -64,6 +64,10 @@ public:
     // A shape built on the run's box (a geometry's field) is a copy made here; null for a shape that
     // needs no box.
     virtual std::shared_ptr<WallShape> builtOn(const ShapeBuildContext&) const { return nullptr; }
+    // A shape that keeps a record of the run (where the particles stood) gives every wall list that
+    // holds it a copy of its own, so that two systems copied from one never share a record; null for
+    // a shape with nothing of the run in it.
+    virtual std::shared_ptr<WallShape> ownCopy() const { return nullptr; }
 };
 
 }  // namespace dpd

@@ -11,6 +11,7 @@
 #include "../support/WallRuleNamed.hpp"
 #include "walls/GeometryShape.hpp"
 #include "walls/Wall.hpp"
+#include "walls/WallList.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -108,6 +109,35 @@ TEST_F(ThinWall, AOnePixelSolidStopsEveryParticleOnTheSideItCameFrom) {
             if (met && rule == "specular") EXPECT_NEAR(p.vx[i], -before.vx[i], 1e-5);
         }
     }
+}
+
+// Two systems copied from one step apart: a copied wall list keeps its own record of where the
+// particles stood, so the original still sees the paths that stepped over the wall after a copy
+// recorded other starts (the ends: it finds only the particles that end inside).
+TEST_F(ThinWall, ACopiedWallListKeepsItsOwnRecordOfWhereTheParticlesStood) {
+    WallList original;
+    original.add(std::make_shared<Wall>(wall("bounceBack")));
+    Particles p = approaching(4000, 5);
+    original.recordPositions(p, kMobile);
+    const WallList copy = original;
+    move(p);
+    WallList stepped = copy;
+    stepped.recordPositions(p, kMobile);
+    long expectCrossed = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        expectCrossed += (p.rx[i] - p.vx[i] < kLeft) != (p.rx[i] < kLeft) || (p.rx[i] - p.vx[i] > kRight) != (p.rx[i] > kRight);
+    std::vector<DeferredCrossing> deferred;
+    const PairRandom random(7);
+    Particles q = p;
+    WallStep fromOriginal{p, kMobile, box, random, 1, 1.0, 0.01, deferred, {}};
+    WallStep fromStepped{q, kMobile, box, random, 1, 1.0, 0.01, deferred, {}};
+    EXPECT_EQ(original.reflect(fromOriginal).crossed[0], expectCrossed);
+    EXPECT_GT(expectCrossed, 1000);
+    // The copy's starts are the ends: only the particles that end inside the wall are found in it.
+    long endInside = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) endInside += original[0].signedDistance({q.rx[i], q.ry[i], q.rz[i]}) < 0.0;
+    EXPECT_LT(endInside, expectCrossed / 2);
+    EXPECT_EQ(stepped.reflect(fromStepped).crossed[0], endInside);
 }
 
 // Bounce layer: a particle within alpha r_c of the face moving towards it leaves with its tangential

@@ -82,11 +82,6 @@ Segment runSegment(System& sys, GrootWarrenIntegrator& integrator, FunctionObjec
 BenchmarkResult timeScene(const BenchmarkScene& scene, int threads, const BenchmarkSettings& settings) {
     omp_set_num_threads(threads);
     System sys = scene.system;
-    // The copy shares its walls with the scene, and with them the record of where the particles stood
-    // (a geometry's paths), which an earlier copy's run moved on: sorting again records it anew.
-    sys.sortByCell();
-    sys.computeForces();
-    sys.dropGhosts();
     FunctionObjects sampling = scene.sampling;
     GrootWarrenIntegrator integrator(0.65);
     for (int k = 0; k < settings.warmup; ++k) integrator.step(sys);
