@@ -1,6 +1,7 @@
 #include "tools/FitMode.hpp"
 
 #include <iomanip>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -12,6 +13,8 @@ void FitPrinter::row(const std::string& label, const std::string& a, const std::
     else out_ << std::setw(28) << a << b;
     out_ << std::right << "\n";
 }
+
+double FitMode::decayTime(const FitSlipLengthResult&) const { return std::numeric_limits<double>::quiet_NaN(); }
 
 std::string FitPrinter::num(double x) {
     std::ostringstream os;

@@ -50,6 +50,11 @@ public:
     virtual bool channel() const { return true; }
     // The viscosity the fit measured; NaN when it measures none.
     virtual double measuredNu(const FitSlipLengthResult& r) const = 0;
+    // The quantities a jackknife over super-blocks gives errors for, and setting those errors (a mode
+    // returning none refuses superBlocks), and the profile's slowest decay time (NaN: unknown).
+    virtual std::vector<double> jackknifed(const FitSlipLengthResult&) const { return {}; }
+    virtual void setJackknifeErrors(FitSlipLengthResult&, const std::vector<double>&) const {}
+    virtual double decayTime(const FitSlipLengthResult&) const;
     virtual void write(Dictionary& d, const FitSlipLengthResult& r) const = 0;
     virtual void print(const FitPrinter& out, const std::string& axis, const FitSlipLengthResult& r) const = 0;
 };

@@ -89,6 +89,23 @@ void attachBlocks(const TableBlocks& tableBlocks, Points& pts, FitSlipLengthResu
     pts.fit.stressBlocks.clear();
 }
 
+// Particle-samples and sums of velocity component `component` per row in each complete block (the blocks
+// of blockVelocities, sampling/BinProfile.hpp).
+BlockSums blockSums(const BinAccumulator& acc, int component) {
+    BlockSums b;
+    for (std::size_t k = 0; k < acc.blocks().size(); ++k) {
+        if (acc.samplesPerBlock()[k] != acc.blockSamples()) continue;
+        std::vector<double> count, sum;
+        for (const BinSums& bin : acc.blocks()[k]) {
+            count.push_back(bin.s[0]);
+            sum.push_back(bin.s[1 + component]);
+        }
+        b.counts.push_back(std::move(count));
+        b.velocitySums.push_back(std::move(sum));
+    }
+    return b;
+}
+
 // gamma of the first pair of mobile species (NaN when there is none).
 double firstMobileGamma(const DpdModel& m) {
     for (int i = 0; i < m.species.size(); ++i) {
@@ -114,7 +131,7 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     s.dpdProperties = dpdProperties;
     s.model = readDpdModel(dpdProperties);
     const Dictionary& d = s.dict;
-    d.checkKeys({"mode", "profile", "component", "exclude", "fitRange", "slipPredictionNu", "wallPositions"});
+    d.checkKeys({"mode", "profile", "component", "exclude", "fitRange", "slipPredictionNu", "wallPositions", "superBlocks"});
     if (d.found("slipPredictionNu")) s.slipPredictionNu = d.getPositive<double>("slipPredictionNu");
     readWallPositions(s);
 
@@ -126,6 +143,9 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
     if (s.profile.empty() || s.profile.find('/') != std::string::npos)
         d.fail("profile", "expected the name of a table in postProcessing/profileBins/<time>/, without '.dat'");
     s.mode->read(s);
+    s.superBlocks = readSuperBlockSetup(d);
+    if (s.superBlocks.on && s.mode->jackknifed(FitSlipLengthResult{}).empty())
+        d.fail("superBlocks", "mode " + mode + " has no jackknife over super-blocks yet (mode poiseuille has)");
     return s;
 }
 
@@ -150,6 +170,57 @@ void predictSlip(const FitSlipLengthSetup& s, const ProfileTableData& t, FitSlip
     } catch (const std::invalid_argument& e) {
         s.dict.fail(given ? "slipPredictionNu" : "", std::string("no predicted slip length: ") + e.what());
     }
+}
+
+// The jackknife over super-blocks (FitSuperBlocks.hpp): the points' profile of all super-blocks but one
+// refitted in turn, without blocks, with the table's bin errors; the errors replace the blocks' when
+// there are at least `minimum` super-blocks.
+void jackknifeErrors(const FitSlipLengthSetup& s, const ProfileTableData& t, const Points& pts, const BlockSums& sums,
+                     FitSlipLengthResult& r) {
+    const SuperBlockSetup& sb = s.superBlocks;
+    const double length = sb.length > 0.0 ? sb.length : sb.decayTimes * s.mode->decayTime(r);
+    SuperBlockInfo& info = r.superBlocks;
+    if (!(sums.blockTime > 0.0) || sums.counts.empty()) {
+        info.note = "no complete sampling blocks";
+        return;
+    }
+    if (!std::isfinite(length) || length <= 0.0) {
+        info.note = "no decay time from this fit";
+        return;
+    }
+    const int per = blocksPerSuperBlock(length, sums.blockTime);
+    const int m = static_cast<int>(sums.counts.size()) / per;
+    info.blocksPerSuperBlock = per;
+    info.superBlockLength = per * sums.blockTime;
+    if (m < sb.minimum) {
+        info.note = std::to_string(sums.counts.size()) + " complete blocks of " + FitPrinter::num(sums.blockTime) +
+                    " make " + std::to_string(m) + " super-blocks of " + FitPrinter::num(info.superBlockLength) +
+                    ", fewer than " + std::to_string(sb.minimum) + ": sample longer";
+        return;
+    }
+    std::vector<std::vector<double>> estimates;
+    for (int left = 0; left < m; ++left) {
+        const std::vector<double> u = leaveOneOutVelocities(sums, per, m, left);
+        FitPoints points;
+        const Profile1D& all = pts.fit.profile;
+        for (std::size_t i = 0; i < pts.rows.size(); ++i) {
+            if (!std::isfinite(u[pts.rows[i]])) continue;
+            points.profile.y.push_back(all.y[i]);
+            points.profile.u.push_back(u[pts.rows[i]]);
+            if (!all.uErr.empty()) points.profile.uErr.push_back(all.uErr[i]);
+        }
+        FitSlipLengthResult one = r;
+        s.mode->fit(s, t, points, one);
+        estimates.push_back(s.mode->jackknifed(one));
+    }
+    std::vector<double> errors;
+    for (std::size_t q = 0; q < estimates.front().size(); ++q) {
+        std::vector<double> values;
+        for (const auto& e : estimates) values.push_back(e[q]);
+        errors.push_back(jackknifeError(values));
+    }
+    s.mode->setJackknifeErrors(r, errors);
+    info.superBlocks = m;
 }
 
 }  // namespace
@@ -179,6 +250,7 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     r.binsWithoutError = pts.withoutError;
 
     s.mode->fit(s, t, pts.fit, r);
+    if (s.superBlocks.on) jackknifeErrors(s, t, pts, blocks.sums, r);
 
     r.densityCentral = centralDensity(t);
     r.gamma = firstMobileGamma(s.model);
@@ -200,7 +272,14 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
     d.setValue("exclude", r.exclude);
     d.setValue("points", r.pointsUsed);
     const BlockErrorInfo& be = r.blockErrors;
-    d.setValue("errors", be.blocks > 0 ? "blocks" : "independentBins");
+    const SuperBlockInfo& sb = r.superBlocks;
+    d.setValue("errors", sb.superBlocks > 0 ? "jackknife" : be.blocks > 0 ? "blocks" : "independentBins");
+    if (sb.superBlocks > 0) {
+        d.setValue("superBlocks", sb.superBlocks);
+        d.setValue("blocksPerSuperBlock", sb.blocksPerSuperBlock);
+        d.setValue("superBlockLength", sb.superBlockLength);
+    }
+    if (!sb.note.empty()) d.setValue("superBlocksNote", sb.note);
     if (be.blocks > 0) {
         d.setValue("errorBlocks", be.blocks);
         d.setValue("errorWindow", be.window);
@@ -220,6 +299,32 @@ Dictionary fitSlipLengthDictionary(const FitSlipLengthResult& r) {
     return d;
 }
 
+namespace {
+
+// Where the printed errors come from: the jackknife over super-blocks, the blocks, or independent bins.
+void printErrorSource(std::ostream& out, const FitSlipLengthResult& r) {
+    const auto num = &FitPrinter::num;
+    const BlockErrorInfo& be = r.blockErrors;
+    const SuperBlockInfo& sb = r.superBlocks;
+    if (sb.superBlocks > 0) {
+        out << "    errors by jackknife over " << sb.superBlocks << " super-blocks of " << num(sb.superBlockLength)
+            << " (" << sb.blocksPerSuperBlock << " sampling blocks each)\n";
+        return;
+    }
+    if (!sb.note.empty()) out << "    no jackknife over super-blocks: " << sb.note << "\n";
+    if (be.blocks > 0) {
+        out << "    errors from the fit block by block: " << be.blocks << " blocks, correlation time " << num(be.tau)
+            << " blocks (window " << be.window << ")\n";
+        if (!be.windowFound)
+            out << "    warning: the blocks stay correlated over a quarter of the run: the errors are uncertain "
+                   "(sample longer)\n";
+    } else
+        out << "    errors with the bins taken as independent (too small where the bins fluctuate together): "
+            << (r.errorNote.empty() ? "no blocks" : r.errorNote) << "\n";
+}
+
+}  // namespace
+
 void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
     const FitPrinter printer(out);
     const auto num = &FitPrinter::num;
@@ -230,16 +335,7 @@ void printFitSlipLength(std::ostream& out, const FitSlipLengthResult& r) {
     if (r.binsWithoutVelocity) out << ", " << r.binsWithoutVelocity << " without particles left out";
     if (r.binsWithoutError) out << ", " << r.binsWithoutError << " without an error bar left out";
     out << "\n    mode " << r.mode->name() << ", g = " << num(r.g) << ", exclude " << num(r.exclude) << "\n";
-    const BlockErrorInfo& be = r.blockErrors;
-    if (be.blocks > 0) {
-        out << "    errors from the fit block by block: " << be.blocks << " blocks, correlation time " << num(be.tau)
-            << " blocks (window " << be.window << ")\n";
-        if (!be.windowFound)
-            out << "    warning: the blocks stay correlated over a quarter of the run: the errors are uncertain "
-                   "(sample longer)\n";
-    } else
-        out << "    errors with the bins taken as independent (too small where the bins fluctuate together): "
-            << (r.errorNote.empty() ? "no blocks" : r.errorNote) << "\n";
+    printErrorSource(out, r);
     r.mode->print(printer, ax, r);
     if (r.slipPrediction.any) {
         const TunableSlipPrediction& sp = r.slipPrediction;
@@ -275,6 +371,8 @@ TableBlocks readTableBlocks(const std::string& samplingFile, const ProfileTableD
         return b;
     }
     b.velocities = blockVelocities(stored.accumulator, component);
+    b.sums = blockSums(stored.accumulator, component);
+    b.blockSamples = stored.accumulator.blockSamples();
     if (stored.accumulator.stressFlowAxis() >= 0)
         b.shearStress = blockShearStress(stored.accumulator, stored.crossSection, stored.dimension);
     if (b.velocities.empty()) b.note = name + " has no complete block";
@@ -305,6 +403,8 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
     const Dictionary dict = Dictionary::readFile((caseDir / "system" / "fitSlipLengthDict").string());
     const Dictionary props = Dictionary::readFile((caseDir / "constant" / "dpdProperties").string());
     const FitSlipLengthSetup setup = readFitSlipLengthSetup(dict, props);
+    const Dictionary control = setup.superBlocks.on ? Dictionary::readFile((caseDir / "system" / "controlDict").string())
+                                                    : Dictionary();
 
     const TimesWithInput selected = selectProfileTimes(o, dict, setup.profile);
     const auto tableOf = [&](const TimeDirectory& t) { return profileTablePath(o.caseDir, t.name, setup.profile); };
@@ -312,7 +412,10 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
     for (const TimeDirectory& t : selected.times) {
         const ProfileTableData table = readProfileTable(tableOf(t));
         const fs::path sampling = caseDir / t.name / "sampling" / (setup.profile + ".h5");
-        results.push_back(fitSlipLength(setup, table, t.name, readTableBlocks(sampling.string(), table, setup.component)));
+        TableBlocks blocks = readTableBlocks(sampling.string(), table, setup.component);
+        if (setup.superBlocks.on && blocks.blockSamples > 0)
+            blocks.sums.blockTime = samplingBlockTime(control, setup.profile, blocks.blockSamples, dict);
+        results.push_back(fitSlipLength(setup, table, t.name, blocks));
         results.back().profileFile = (fs::path("postProcessing") / "profileBins" / t.name / (setup.profile + ".dat")).string();
     }
     for (const auto& t : selected.skipped) out << "Time = " << t << ": no profile table " << setup.profile << ".dat, skipped\n";

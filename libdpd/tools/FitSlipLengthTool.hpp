@@ -14,6 +14,7 @@
 //                               // the line is fitted over
 //   slipPredictionNu 0.3;       // optional: the kinematic viscosity for the predicted slip length of
 //                               // tunable-slip walls (default: the fit's own nu)
+//   superBlocks { decayTimes 2; }  // optional: errors by jackknife over super-blocks (FitSuperBlocks.hpp)
 //   wallPositions (-20 20);     // poiseuille, couette: the channel's walls along the profile's axis
 //                               // when they are not planar walls of dpdProperties but the solid of a
 //                               // geometry block (randomEquilWall); such walls are at rest. An error
@@ -47,6 +48,11 @@
 // bins are taken as independent (errors independentBins) and the printed result says why. Blocks must
 // be long against the slowest flow mode for either to hold.
 //
+// With superBlocks (mode poiseuille), the errors of nu, the slip lengths and velocities are the
+// jackknife's over super-blocks long against that mode (fit.dat: errors jackknife, superBlocks m,
+// blocksPerSuperBlock, superBlockLength); with too few super-blocks they stay the blocks' and
+// superBlocksNote says why.
+//
 // Results: postProcessing/fitSlipLength/<time>/fit.dat, a dictionary. Every selected time is fitted
 // before anything is written, so an error leaves the case as it was.
 #include "analysis/CouetteFit.hpp"
@@ -56,6 +62,7 @@
 #include "io/TimeDirectories.hpp"
 #include "case/DpdProperties.hpp"
 #include "sampling/ProfileTable.hpp"
+#include "tools/FitSuperBlocks.hpp"
 
 #include <iosfwd>
 #include <memory>
@@ -81,6 +88,7 @@ struct FitSlipLengthSetup {
     bool hasWallPositions = false;    // wallPositions given: walls of a geometry, at rest
     double wallLow = 0.0, wallHigh = 0.0;
     bool predictTunableSlip = true;   // false: no predicted slip length (a striped wall's is not the formula's)
+    SuperBlockSetup superBlocks;      // errors by jackknife over super-blocks, when on
 };
 
 // Checks keywords (unknown ones, mode, component, exclude) and resolves the component and the body
@@ -112,6 +120,7 @@ struct FitSlipLengthResult {
     double gamma = 0.0;
     double nuKineticTheory = 0.0;
     TunableSlipPrediction slipPrediction;  // channel modes with tunable-slip walls
+    SuperBlockInfo superBlocks;            // the jackknife, when the setup asks for it
 };
 
 // The table's bins block by block (velocities[k][row], NaN where block k saw no particles in the row),
@@ -119,6 +128,8 @@ struct FitSlipLengthResult {
 struct TableBlocks {
     std::vector<std::vector<double>> velocities;
     std::vector<std::vector<double>> shearStress;  // the same blocks' shear stress per row, when sampled
+    BlockSums sums;           // the same blocks' particle-samples and velocity sums per row
+    long blockSamples = 0;    // samples in a complete block
     std::string note;
 };
 

@@ -5,6 +5,8 @@
 #include "tools/FitModeParts.hpp"
 #include "tools/FitSlipLengthTool.hpp"
 
+#include <cmath>
+
 namespace dpd {
 
 std::string PoiseuilleFitMode::name() const { return "poiseuille"; }
@@ -33,6 +35,26 @@ void PoiseuilleFitMode::fit(const FitSlipLengthSetup& s, const ProfileTableData&
 }
 
 double PoiseuilleFitMode::measuredNu(const FitSlipLengthResult& r) const { return r.poiseuille.nu; }
+
+std::vector<double> PoiseuilleFitMode::jackknifed(const FitSlipLengthResult& r) const {
+    const PoiseuilleFitResult& p = r.poiseuille;
+    return {p.nu, p.lower.slipLength, p.upper.slipLength, p.lower.slipVelocity, p.upper.slipVelocity};
+}
+
+void PoiseuilleFitMode::setJackknifeErrors(FitSlipLengthResult& r, const std::vector<double>& e) const {
+    PoiseuilleFitResult& p = r.poiseuille;
+    p.nuErr = e[0];
+    p.lower.slipLengthErr = e[1];
+    p.upper.slipLengthErr = e[2];
+    p.lower.slipVelocityErr = e[3];
+    p.upper.slipVelocityErr = e[4];
+}
+
+// The slowest transverse momentum mode between the walls: d^2 / (pi^2 nu) (docs/analysis.md 5.2).
+double PoiseuilleFitMode::decayTime(const FitSlipLengthResult& r) const {
+    const double d = r.poiseuille.upper.position - r.poiseuille.lower.position;
+    return d * d / (M_PI * M_PI * r.poiseuille.nu);
+}
 
 void PoiseuilleFitMode::write(Dictionary& d, const FitSlipLengthResult& r) const {
     const PoiseuilleFitResult& p = r.poiseuille;

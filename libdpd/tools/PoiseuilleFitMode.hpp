@@ -12,6 +12,9 @@ public:
     void fit(const FitSlipLengthSetup& s, const ProfileTableData& t, const FitPoints& points,
              FitSlipLengthResult& r) const override;
     double measuredNu(const FitSlipLengthResult& r) const override;
+    std::vector<double> jackknifed(const FitSlipLengthResult& r) const override;
+    void setJackknifeErrors(FitSlipLengthResult& r, const std::vector<double>& errors) const override;
+    double decayTime(const FitSlipLengthResult& r) const override;
     void write(Dictionary& d, const FitSlipLengthResult& r) const override;
     void print(const FitPrinter& out, const std::string& axis, const FitSlipLengthResult& r) const override;
 };

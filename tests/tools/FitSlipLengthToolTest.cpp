@@ -320,7 +320,7 @@ namespace {
 
 // A sampling file of 16 blocks in which the whole profile moves up and down from block to block (an
 // irregular shift of about 0.05) with little noise per bin: the table made from it, and the file itself at time 10.
-BinAccumulator shiftingBlocks(int nBins) {
+BinAccumulator shiftingBlocks(int nBins, double noise = 1e-3) {
     BinLayout layout;
     layout.axis = 2;
     layout.nBins = nBins;
@@ -331,7 +331,7 @@ BinAccumulator shiftingBlocks(int nBins) {
         const double shift = 0.05 * std::sin(1.3 + 2.9 * k * k);
         std::vector<BinSums> bins(nBins);
         for (int b = 0; b < nBins; ++b) {
-            const double n = 1000.0, u = poiseuille(layout.centre(b)) + shift + 1e-3 * std::sin(3.0 * b + k);
+            const double n = 1000.0, u = poiseuille(layout.centre(b)) + shift + noise * std::sin(3.0 * b + k);
             bins[b].s[0] = n;
             bins[b].s[1] = n * u;
             bins[b].s[4] = n * (u * u + 1.0);
@@ -374,6 +374,101 @@ TEST_F(FitSlipLengthToolTest, ASamplingFileWithOtherBinsIsNotUsed) {
     run(&printed);
     EXPECT_EQ(fitDat().get<std::string>("errors"), "independentBins");
     EXPECT_NE(printed.find("are not the table's"), std::string::npos) << printed;
+}
+
+// A case whose sampling blocks are shiftingBlocks' without noise, each block 5 time units (100 samples
+// every 5 steps of 0.01), fitted with the superBlocks entry given.
+class SuperBlockTest : public FitSlipLengthToolTest {
+protected:
+    void setUpCase(const std::string& superBlocks, const std::string& mode = "poiseuille",
+                   const std::string& bodyForce = "type uniform; value (0.02 0 0);") {
+        write("constant/dpdProperties", channelProperties(bodyForce));
+        write("system/controlDict", std::string(kHeader) +
+                                        "deltaT 0.01;\nfunctions { channelProfile { type binnedProfile; sampleInterval 5; } }\n");
+        writeDict("mode " + mode + ";\nprofile channelProfile;\n" + superBlocks);
+        const BinAccumulator acc = shiftingBlocks(kBins, 0.0);
+        writeTable(computeProfile(acc, 1.0, 3));
+        fs::create_directories(dir_ / "10/sampling");
+        writeBins((dir_ / "10/sampling/channelProfile.h5").string(), acc, 3, 1.0, 10.0);
+    }
+};
+
+// The profile moves as a whole from block to block, so each fit's slip velocity is the profile's plus the
+// mean shift of the blocks it holds, and nu does not move: the jackknife's slip-velocity error is then
+// the standard error of the super-blocks' mean shifts, exactly, and nu's is zero.
+TEST_F(SuperBlockTest, TheJackknifeOfAWholeProfileShiftIsTheStandardErrorOfTheSuperBlocksShifts) {
+    setUpCase("superBlocks { length 15; minimum 5; }\n");
+    std::string printed;
+    const auto r = run(&printed);
+    const Dictionary d = fitDat();
+    EXPECT_EQ(d.get<std::string>("errors"), "jackknife");
+    EXPECT_EQ(d.get<int>("superBlocks"), 5);
+    EXPECT_EQ(d.get<int>("blocksPerSuperBlock"), 3);
+    EXPECT_DOUBLE_EQ(d.get<double>("superBlockLength"), 15.0);
+    // Super-block j holds blocks 1 + 3j .. 3 + 3j (block 0, the earliest, is left out).
+    std::vector<double> means;
+    for (int j = 0; j < 5; ++j) {
+        double sum = 0.0;
+        for (int k = 1 + 3 * j; k < 4 + 3 * j; ++k) sum += 0.05 * std::sin(1.3 + 2.9 * k * k);
+        means.push_back(sum / 3.0);
+    }
+    double mean = 0.0, squares = 0.0;
+    for (double x : means) mean += x / 5.0;
+    for (double x : means) squares += (x - mean) * (x - mean);
+    const double standardError = std::sqrt(squares / 4.0 / 5.0);
+    ASSERT_GT(standardError, 0.005);
+    expectRel(r[0].poiseuille.lower.slipVelocityErr, standardError, 1e-9);
+    expectRel(r[0].poiseuille.upper.slipVelocityErr, standardError, 1e-9);
+    expectRel(d.get<std::vector<double>>("slipVelocityError")[0], standardError, 1e-6);
+    EXPECT_LT(r[0].poiseuille.nuErr, 1e-9 * kNu);
+    // The slip length moves with the slip velocity at a fixed shear rate.
+    expectRel(r[0].poiseuille.lower.slipLengthErr, standardError / r[0].poiseuille.lower.shearRate, 1e-6);
+    EXPECT_NE(printed.find("jackknife over 5 super-blocks of 15"), std::string::npos) << printed;
+}
+
+TEST_F(SuperBlockTest, DecayTimesSetTheLengthFromTheChannelsSlowestMode) {
+    // tau1 = d^2 / (pi^2 nu) = 100 / (pi^2 0.3) = 33.8; 0.3 tau1 = 10.1: two blocks of 5.
+    setUpCase("superBlocks { decayTimes 0.3; }\n");
+    run();
+    const Dictionary d = fitDat();
+    EXPECT_EQ(d.get<std::string>("errors"), "jackknife");
+    EXPECT_EQ(d.get<int>("blocksPerSuperBlock"), 2);
+    EXPECT_EQ(d.get<int>("superBlocks"), 8);
+}
+
+TEST_F(SuperBlockTest, TooFewSuperBlocksKeepTheBlocksErrorsAndSayWhy) {
+    setUpCase("superBlocks { length 15; minimum 6; }\n");
+    std::string printed;
+    run(&printed);
+    const Dictionary d = fitDat();
+    EXPECT_EQ(d.get<std::string>("errors"), "blocks");
+    EXPECT_FALSE(d.found("superBlocks"));
+    EXPECT_NE(d.get<std::string>("superBlocksNote").find("5 super-blocks of 15, fewer than 6"), std::string::npos)
+        << d.get<std::string>("superBlocksNote");
+    EXPECT_NE(printed.find("no jackknife"), std::string::npos) << printed;
+}
+
+TEST_F(SuperBlockTest, BadEntriesNameTheKeyword) {
+    setUpCase("superBlocks { length 15; decayTimes 2; }\n");
+    EXPECT_NE(inputError().find("give one of length"), std::string::npos) << inputError();
+    setUpCase("superBlocks { length 15; minimum 1; }\n");
+    EXPECT_NE(inputError().find("minimum"), std::string::npos) << inputError();
+    setUpCase("superBlocks { lenght 15; }\n");
+    EXPECT_NE(inputError().find("lenght"), std::string::npos) << inputError();
+    write("system/controlDict", std::string(kHeader) + "deltaT 0.01;\n");
+    setUpCase("superBlocks { length 15; }\n");
+    write("system/controlDict", std::string(kHeader) + "deltaT 0.01;\n");
+    const std::string noFunction = inputError();
+    EXPECT_NE(noFunction.find("superBlocks"), std::string::npos) << noFunction;
+    EXPECT_NE(noFunction.find("no function object 'channelProfile'"), std::string::npos) << noFunction;
+    EXPECT_TRUE(wroteNothing());
+}
+
+TEST_F(SuperBlockTest, AModeWithoutAJackknifeRefusesSuperBlocks) {
+    setUpCase("superBlocks { length 15; }\ncomponent x;\n", "couette", "type uniform; value (0 0 0);");
+    const std::string refusal = inputError();
+    EXPECT_NE(refusal.find("superBlocks"), std::string::npos) << refusal;
+    EXPECT_NE(refusal.find("mode couette has no jackknife"), std::string::npos) << refusal;
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ Modules:
     pair_temperature  a bulk's kT split into heat and shared motion (etc/pairTemperature.py)
 
 The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip): the
-package reads their results. Two fits remain in Python until a tool gives them: channel.poiseuille_fit
-repeats fitSlipLength's parabola on leave-one-out super-block profiles, for a jackknife error that
-fitSlipLength does not yet give, and tutorials/polymer/scaling fits its power law R_g^2 ~ N^(2 nu).
+package reads their results (fitSlipLength's superBlocks entry gives the jackknife errors over
+super-blocks). One fit remains in Python until a tool gives it: tutorials/polymer/scaling fits its power
+law R_g^2 ~ N^(2 nu).
 """

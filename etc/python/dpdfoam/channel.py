@@ -1,5 +1,5 @@
 """Channel flows between two walls: the no-slip Poiseuille profile, kT against the local shear rate,
-the slip of the two walls, and fitSlipLength's parabola for jackknife errors over super-blocks."""
+and the slip of the two walls."""
 import numpy as np
 
 from .io import body_force, latest_fit, latest_profile
@@ -46,30 +46,3 @@ def walls_mean_slip(sweep):
     of the channel's mean velocity moves the two walls' slip in opposite directions and cancels here)."""
     b = 0.5 * (np.asarray(sweep["slipLength_0"]) + np.asarray(sweep["slipLength_1"]))
     return b, 0.5 * np.hypot(sweep["slipLengthError_0"], sweep["slipLengthError_1"])
-
-
-def poiseuille_fit(z, u, sigma, walls, exclude, g):
-    """nu and the slip lengths (lower, upper) of fitSlipLength's weighted parabola (mode poiseuille) fitted
-    to the bins at least `exclude` from the walls (slip = u / du/dn at the wall). On the run's profile it
-    gives fit.dat's numbers to rounding; it serves only the leave-one-out fits below, which fitSlipLength lacks."""
-    lo, hi = walls
-    sel = (z >= lo + exclude) & (z <= hi - exclude) & np.isfinite(u) & (sigma > 0)
-    c2, c1, c0 = np.polyfit(z[sel], u[sel], 2, w=1.0 / sigma[sel])
-    value = lambda x: c0 + c1 * x + c2 * x * x  # noqa: E731
-    slope = lambda x: c1 + 2.0 * c2 * x  # noqa: E731
-    return np.array([-g / (2.0 * c2), value(lo) / slope(lo), -value(hi) / slope(hi)])
-
-
-def leave_one_out_poiseuille(z, count, sum_u, sigma, walls, exclude, g):
-    """(nu, slip lower, slip upper) of the profile of every super-block but one, each left out in turn
-    (count, sum_u: particle-samples and sums of u per super-block and bin), refitted with the run's bin
-    errors sigma: an (m, 3) array, for stats.jackknife_error."""
-    total_c, total_s = count.sum(axis=0), sum_u.sum(axis=0)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.array([poiseuille_fit(z, (total_s - sum_u[k]) / (total_c - count[k]), sigma, walls, exclude, g)
-                         for k in range(len(count))])
-
-
-def fit_weights(table):
-    """fitSlipLength's bin errors for a refit: the table's uxErr, an empty bin (error 0) weightless."""
-    return np.where(table["uxErr"] > 0, table["uxErr"], np.inf)

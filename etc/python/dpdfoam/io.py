@@ -119,7 +119,8 @@ def set_dictionary_value(path, entry, value):
 
 def read_dict(path):
     """The plain `key value;` and `key (a b ...);` entries of a dictionary the tools write (fit.dat,
-    compare.dat): numbers as floats, lists as lists of floats, anything else as a string."""
+    compare.dat): numbers as floats, lists as lists of floats, anything else as a string (a quoted one
+    without its quotes)."""
     with open(path) as f:
         return parse_dict(f.read())
 
@@ -136,7 +137,7 @@ def parse_dict(text):
             else:
                 out[key] = float(value)
         except ValueError:
-            out[key] = value
+            out[key] = value[1:-1] if len(value) > 1 and value[0] == value[-1] == '"' else value
     return out
 
 

@@ -20,7 +20,8 @@ default's d = 30, 290 at the lattice-wall variant's d = 28, 24 at the test's d =
 the flux's fluctuation without chains), and the flux and the chain shapes of the 90-bead chains
 decorrelate within ~300 (measured at d = 28: their autocorrelation crosses zero at 250-300, and the
 standard error over blocks stops growing with the block length from ~300). Consecutive sampling
-blocks are therefore joined into super-blocks of about 2 tau1 (600; test 50), and every mean's
+blocks are therefore joined into super-blocks of about 2 tau1 (600; test 50: the superBlocks entry of
+the case's fitSlipLengthDict, whose fit.dat says how the blocks were joined), and every mean's
 standard error is the spread of its M super-block means over sqrt(M) (M = 5 in the default's 3000
 sampled time units, 8 in the lattice-wall variant's 4800 and in the test). For an exponentially
 correlated signal, neighbouring means of blocks 2 tau1 long are still correlated by ~0.3, which leaves
@@ -44,13 +45,12 @@ import warnings
 import numpy as np
 
 from dpdfoam.blocks import SampledBins, temperature
-from dpdfoam.channel import fit_weights, leave_one_out_poiseuille
 from dpdfoam.checks import Checks, write_results
 from dpdfoam.io import dictionary_value, latest_dir, log_values, read_dict, read_sweep, read_table, read_text, run_finished
 from dpdfoam.pair_temperature import case_rows
 from dpdfoam.plots import label, mark_walls, plt, save
 from dpdfoam.snapshots import snapshot_box, unwrapped_chains
-from dpdfoam.stats import Z_SIGMA, BlockMean as Stat, combined, count_weighted_mean, jackknife_error, student_t
+from dpdfoam.stats import Z_SIGMA, BlockMean as Stat, combined, count_weighted_mean, student_t
 
 import chainExtension  # beside this script
 
@@ -98,15 +98,16 @@ def paper_grid(path):
 class Case:
     """One case of the sweep: its profiles, fit, chains and log, with super-block statistics."""
 
-    def __init__(self, path, chains, length, super_block):
+    def __init__(self, path, chains, length):
         self.path, self.chains, self.length = path, int(chains), int(length)
         self.beads = self.chains * self.length
         self.label = "no chains" if self.chains == 0 else f"{self.chains}x{self.length}"
         control = os.path.join(path, "system/controlDict")
         self.start = float(dictionary_value(control, "functions/channelProfile/startTime"))
         self.end = float(dictionary_value(control, "endTime"))
-        interval = int(dictionary_value(control, "functions/channelProfile/sampleInterval"))
         self.fit = read_dict(latest_dir(os.path.join(path, "postProcessing/fitSlipLength/*")) + "/fit.dat")
+        if self.fit["errors"] != "jackknife":
+            sys.exit(f"plotResults: {path}: no super-blocks ({self.fit.get('superBlocksNote', 'no superBlocks entry in system/fitSlipLengthDict')}): run longer")
         self.walls, self.g = tuple(self.fit["wallPosition"]), self.fit["g"]
         self.d, self.centre = self.walls[1] - self.walls[0], 0.5 * (self.walls[0] + self.walls[1])
         self.h = 0.5 * self.d
@@ -118,9 +119,9 @@ class Case:
         self.snapshot = os.path.join(time_dir, "particles.h5")
         self.snapshot0 = os.path.join(path, "0", "particles.h5")
         self.prof = SampledBins(os.path.join(time_dir, "sampling/channelProfile.h5"))
-        self.block_time = self.prof.block_samples * interval * float(dictionary_value(control, "deltaT"))
-        self.per, self.m = self.prof.layout(self.block_time, super_block)
-        self.super_time = self.per * self.block_time
+        # fitSlipLength's super-blocks (its jackknife gives nu's error); every other mean uses the same.
+        self.per, self.m = int(self.fit["blocksPerSuperBlock"]), int(self.fit["superBlocks"])
+        self.super_time = float(self.fit["superBlockLength"])
         # The super-blocks cover [window_start, end): the earliest sampling blocks left out, if any.
         self.window_start = self.end - self.m * self.super_time
         self._flow()
@@ -151,8 +152,7 @@ class Case:
         self.kT = bulk_kT(sums, self.bulk)
         self.kT_mean = count_weighted_mean(temperature(sums.sum(axis=0))[inside], count.sum(axis=0)[inside])
         # nu: fitSlipLength's, with its error by jackknife over the super-blocks.
-        leave = leave_one_out_poiseuille(z, count, sum_u, fit_weights(self.table), self.walls, self.fit["exclude"], self.g)
-        self.nu = Stat.of(self.fit["nu"], float(jackknife_error(leave[:, 0])), self.m - 1)
+        self.nu = Stat.of(self.fit["nu"], self.fit["nuError"], self.m - 1)
         self.rho_bulk = float(np.mean(self.prof.density(sums.sum(axis=0), self.m * samples)[self.bulk]))
         self._asymmetry(z, count, sum_u)
 
@@ -392,16 +392,10 @@ def main():
     test = "-test" in sys.argv[1:]
     suffix, name = variant(sys.argv[1:])
     sweep_dir, results, picture = f"sweep{suffix}", f"results{suffix}.dat", f"polymerChannel{suffix}.png"
-    # Super-blocks (module docstring): ~2 tau1, 600 time units at full size, 50 in the test.
-    super_block = 50.0 if test else 600.0
-
     sweep = read_sweep(os.path.join(sweep_dir, "sweep.dat"))
-    cases = [Case(os.path.join(sweep_dir, case), n, L, super_block)
+    cases = [Case(os.path.join(sweep_dir, case), n, L)
              for case, n, L in zip(sweep["case"], sweep["chains"], sweep["length"])]
     ref, chain_cases, n_sweep, l_sweep = sweeps(cases)
-    too_few = [c.label for c in cases if c.m < 4]
-    if too_few:
-        sys.exit(f"plotResults: fewer than 4 super-blocks of {super_block:g} in {', '.join(too_few)}: run longer")
     # Per case: the deficit of the flux against no chains, and its error.
     for c in cases:
         ratio = c.U.value / ref.U.value

@@ -5,12 +5,13 @@ with its transverse momentum modes, the slowest of which decays in tau1 = d^2 / 
 units for d = 10, 600 for d = 40) and carries most of the variance of a time average. The blocks the
 run samples in (25 time units) are shorter than that, so their spread underestimates the error of
 the mean. Here consecutive blocks are joined into super-blocks of twice tau1 (to the nearest
-sampling block; the test's 25 make 75 for 2 tau1 = 75.2); for an exponentially correlated signal,
+sampling block; the test's 25 make 75 for 2 tau1 = 75.2; the superBlocks entry of system/fitSlipLengthDict,
+which fit.dat reports); for an exponentially correlated signal,
 neighbouring means of blocks 2 tau1 long are correlated by about 0.3, so the variance of the mean is
 still underestimated by ~25 % for the slowest mode and much less for the faster ones, which carry the
 rest (~10 % on the variance, 5 % on the errors, in all).
-  - nu and the slip lengths: jackknife over the super-blocks (each left out in turn, the profile
-    refitted as fitSlipLength fits it: dpdfoam.channel.leave_one_out_poiseuille);
+  - nu and the slip lengths: fitSlipLength's jackknife over the super-blocks (each left out in turn,
+    the profile refitted);
   - the per-bin errors: the profileBins error times sqrt(s), s the ratio of the super-block variance
     of the bin means to the sampling-block one, pooled over the bins of the fit range (one number per
     run: per bin, M super-blocks would give errors too noisy for a chi^2).
@@ -21,13 +22,8 @@ import numpy as np
 
 from dpdfoam.blocks import SampledBins
 from dpdfoam.checks import as_number
-from dpdfoam.channel import fit_weights, leave_one_out_poiseuille
 from dpdfoam.io import latest_fit, latest_profile, latest_sampling
-from dpdfoam.stats import combined, jackknife_error
-
-# Super-blocks this many slowest-mode decay times long, and at least this many of them.
-SUPER_BLOCK_TAUS = 2.0
-MIN_SUPER_BLOCKS = 5
+from dpdfoam.stats import combined
 # Budgets of the pair comparisons' standard errors (issue 45): the difference's jackknife error (two
 # runs' in quadrature) first below its budget, then the difference within 3 budgets of zero, a bound
 # fixed by the budget (not widened with the run's own error). Each jackknife error has 4 degrees of
@@ -46,33 +42,26 @@ PAIR_BUDGETS = {
 class WallRun:
     """One channel: its profile table, fit, sampled blocks and the long-block statistics."""
 
-    def __init__(self, label, case, profile, sample_time, tau1):
+    def __init__(self, label, case, profile):
         self.label, self.case = label, case
         self.table, self.fit = latest_profile(case, profile), latest_fit(case)
         self.walls = tuple(self.fit["wallPosition"])
         z, exclude = self.table["z"], self.fit["exclude"]
         self.fitted = (z >= self.walls[0] + exclude) & (z <= self.walls[1] - exclude)
-        bins = SampledBins(latest_sampling(case, profile))
-        block_time = bins.block_samples * sample_time
-        per, self.super_blocks = bins.layout(block_time, SUPER_BLOCK_TAUS * tau1)
-        self.super_block_time = per * block_time
         self.too_short = ""
-        if self.super_blocks < MIN_SUPER_BLOCKS:
-            # No honest error bars: fitSlipLength's own (short-block) errors, and no verdict.
-            self.too_short = (f"{case} sampled {len(bins.blocks)} blocks of {block_time:g}: fewer than "
-                              f"{MIN_SUPER_BLOCKS} super-blocks of {SUPER_BLOCK_TAUS:g} tau1 = {SUPER_BLOCK_TAUS * tau1:.0f}")
-            self.jackknife_error = np.array([self.fit["nuError"]] + list(self.fit["slipLengthError"]))
-            self.inefficiency, self.ux_error = 1.0, self.table["uxErr"]
+        if self.fit["errors"] != "jackknife":
+            # No honest error bars: fitSlipLength's (short-block) errors, and no verdict.
+            self.too_short = f"{case}: {self.fit.get('superBlocksNote', 'no superBlocks entry in system/fitSlipLengthDict')}"
+            self.super_blocks, self.inefficiency, self.ux_error = 0, 1.0, self.table["uxErr"]
             return
-        # The last super_blocks * per blocks (the earliest, closest to the start, are left out).
-        used = bins.latest(per, self.super_blocks)
-        self._statistics(used[..., 0], used[..., 1])
+        self.super_blocks, self.super_block_time = int(self.fit["superBlocks"]), float(self.fit["superBlockLength"])
+        # The super-blocks of the fit: the last superBlocks x blocksPerSuperBlock sampling blocks.
+        used = SampledBins(latest_sampling(case, profile)).latest(int(self.fit["blocksPerSuperBlock"]), self.super_blocks)
+        self._bin_statistics(used[..., 0], used[..., 1])
 
-    def _statistics(self, count, sum_u):
+    def _bin_statistics(self, count, sum_u):
         m = self.super_blocks
         c_k, s_k = count.sum(axis=1), sum_u.sum(axis=1)
-        self.jackknife_error = jackknife_error(leave_one_out_poiseuille(
-            self.table["z"], c_k, s_k, fit_weights(self.table), self.walls, self.fit["exclude"], self.fit["g"]))
         # Variance of the mean of each bin: from the super-blocks, and from the sampling blocks.
         with np.errstate(invalid="ignore", divide="ignore"):
             u_super = s_k / c_k
@@ -87,9 +76,11 @@ class WallRun:
         self.deviations = dev[:, self.fitted] / np.std(u_super[:, self.fitted], axis=0, ddof=1)
 
     def values(self):
-        """nu, slip lower, slip upper (fitSlipLength's) and their jackknife errors."""
-        slip = self.fit["slipLength"]
-        return np.array([self.fit["nu"], slip[0], slip[1]]), self.jackknife_error
+        """nu, slip lower, slip upper and their errors (fitSlipLength's: the jackknife's, when it had
+        the super-blocks)."""
+        f = self.fit
+        return (np.array([f["nu"], f["slipLength"][0], f["slipLength"][1]]),
+                np.array([f["nuError"], f["slipLengthError"][0], f["slipLengthError"][1]]))
 
     def near_wall_density(self, cutoff):
         """Mean density within one cutoff of each wall and the lowest bin there, relative to the
