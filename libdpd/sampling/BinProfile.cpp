@@ -153,6 +153,20 @@ std::vector<std::vector<double>> blockVelocities(const BinAccumulator& acc, int 
     return blocks;
 }
 
+BlockVelocitySums blockVelocitySums(const BinAccumulator& acc, int component) {
+    BlockVelocitySums b;
+    for (std::size_t k : completeBlocks(acc)) {
+        std::vector<double> count, sum;
+        for (const BinSums& bin : acc.blocks()[k]) {
+            count.push_back(bin.s[0]);
+            sum.push_back(bin.s[1 + component]);
+        }
+        b.counts.push_back(std::move(count));
+        b.velocitySums.push_back(std::move(sum));
+    }
+    return b;
+}
+
 std::vector<std::vector<double>> blockShearStress(const BinAccumulator& acc, double crossSection, int dimension) {
     const BinLayout& L = acc.layout();
     const double binMeasure = L.width() * L.width2() * crossSection;

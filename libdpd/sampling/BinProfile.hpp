@@ -55,6 +55,13 @@ BinProfile computeProfile(const BinAccumulator& acc, double crossSection, int di
 // bins (analysis/Profile1D.hpp).
 std::vector<std::vector<double>> blockVelocities(const BinAccumulator& acc, int component);
 
+// The particle-samples and sums of velocity component `component` of every bin in each complete block
+// (the blocks of blockVelocities): for profiles of blocks joined together.
+struct BlockVelocitySums {
+    std::vector<std::vector<double>> counts, velocitySums;
+};
+BlockVelocitySums blockVelocitySums(const BinAccumulator& acc, int component);
+
 // The shear stress sigma_{flow, axis} of every bin in each complete block (stress sampling on; the
 // same blocks as blockVelocities).
 std::vector<std::vector<double>> blockShearStress(const BinAccumulator& acc, double crossSection, int dimension);

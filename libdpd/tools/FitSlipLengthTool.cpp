@@ -89,23 +89,6 @@ void attachBlocks(const TableBlocks& tableBlocks, Points& pts, FitSlipLengthResu
     pts.fit.stressBlocks.clear();
 }
 
-// Particle-samples and sums of velocity component `component` per row in each complete block (the blocks
-// of blockVelocities, sampling/BinProfile.hpp).
-BlockSums blockSums(const BinAccumulator& acc, int component) {
-    BlockSums b;
-    for (std::size_t k = 0; k < acc.blocks().size(); ++k) {
-        if (acc.samplesPerBlock()[k] != acc.blockSamples()) continue;
-        std::vector<double> count, sum;
-        for (const BinSums& bin : acc.blocks()[k]) {
-            count.push_back(bin.s[0]);
-            sum.push_back(bin.s[1 + component]);
-        }
-        b.counts.push_back(std::move(count));
-        b.velocitySums.push_back(std::move(sum));
-    }
-    return b;
-}
-
 // gamma of the first pair of mobile species (NaN when there is none).
 double firstMobileGamma(const DpdModel& m) {
     for (int i = 0; i < m.species.size(); ++i) {
@@ -371,7 +354,7 @@ TableBlocks readTableBlocks(const std::string& samplingFile, const ProfileTableD
         return b;
     }
     b.velocities = blockVelocities(stored.accumulator, component);
-    b.sums = blockSums(stored.accumulator, component);
+    b.sums = {blockVelocitySums(stored.accumulator, component)};
     b.blockSamples = stored.accumulator.blockSamples();
     if (stored.accumulator.stressFlowAxis() >= 0)
         b.shearStress = blockShearStress(stored.accumulator, stored.crossSection, stored.dimension);

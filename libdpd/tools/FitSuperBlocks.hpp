@@ -15,6 +15,7 @@
 // the table's bin errors, and the spread of those fits gives the errors (the jackknife). With fewer than
 // `minimum` super-blocks the errors stay the sampling blocks' and fit.dat says why.
 #include "io/Dictionary.hpp"
+#include "sampling/BinProfile.hpp"
 
 #include <string>
 #include <vector>
@@ -31,10 +32,9 @@ struct SuperBlockSetup {
 // Reads the optional superBlocks sub-dictionary (InputError naming the file, line and keyword).
 SuperBlockSetup readSuperBlockSetup(const Dictionary& fitDict);
 
-// The complete sampling blocks of a table's rows: particle-samples and sums of the fitted velocity
-// component, block by block in time order, and the time a block spans.
-struct BlockSums {
-    std::vector<std::vector<double>> counts, velocitySums;
+// The complete sampling blocks of a table's rows (particle-samples and sums of the fitted velocity
+// component, block by block in time order) and the time a block spans.
+struct BlockSums : BlockVelocitySums {
     double blockTime = 0.0;
 };
 

@@ -20,8 +20,7 @@ Modules:
     contraction the contraction tutorials' scene (tutorials/contraction/*)
     pair_temperature  a bulk's kT split into heat and shared motion (etc/pairTemperature.py)
 
-The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip): the
-package reads their results (fitSlipLength's superBlocks entry gives the jackknife errors over
-super-blocks). One fit remains in Python until a tool gives it: tutorials/polymer/scaling fits its power
-law R_g^2 ~ N^(2 nu).
+The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip,
+chainScaling): the package reads their results (fitSlipLength's superBlocks entry gives the jackknife
+errors over super-blocks; chainScaling the power law R_g^2 ~ N^(2 nu)).
 """

@@ -127,6 +127,8 @@ def read_dict(path):
 
 def parse_dict(text):
     """read_dict on the text of a dictionary (or of one sub-dictionary's body)."""
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)  # the banner (its words would take the first entry)
+    text = re.sub(r"//[^\n]*", "", text)
     text = re.sub(r"FoamFile\s*\{[^}]*\}", "", text)
     out = {}
     for key, value in re.findall(r"^\s*(\w+)\s+([^;]+);", text, re.M):
