@@ -155,6 +155,19 @@ void predictSlip(const FitSlipLengthSetup& s, const ProfileTableData& t, FitSlip
     }
 }
 
+// The points with the velocities u of the table's rows (those with none left out), without blocks.
+FitPoints withVelocities(const Points& pts, const std::vector<double>& u) {
+    FitPoints points;
+    const Profile1D& all = pts.fit.profile;
+    for (std::size_t i = 0; i < pts.rows.size(); ++i) {
+        if (!std::isfinite(u[pts.rows[i]])) continue;
+        points.profile.y.push_back(all.y[i]);
+        points.profile.u.push_back(u[pts.rows[i]]);
+        if (!all.uErr.empty()) points.profile.uErr.push_back(all.uErr[i]);
+    }
+    return points;
+}
+
 // The jackknife over super-blocks (FitSuperBlocks.hpp): the points' profile of all super-blocks but one
 // refitted in turn, without blocks, with the table's bin errors; the errors replace the blocks' when
 // there are at least `minimum` super-blocks.
@@ -183,17 +196,8 @@ void jackknifeErrors(const FitSlipLengthSetup& s, const ProfileTableData& t, con
     }
     std::vector<std::vector<double>> estimates;
     for (int left = 0; left < m; ++left) {
-        const std::vector<double> u = leaveOneOutVelocities(sums, per, m, left);
-        FitPoints points;
-        const Profile1D& all = pts.fit.profile;
-        for (std::size_t i = 0; i < pts.rows.size(); ++i) {
-            if (!std::isfinite(u[pts.rows[i]])) continue;
-            points.profile.y.push_back(all.y[i]);
-            points.profile.u.push_back(u[pts.rows[i]]);
-            if (!all.uErr.empty()) points.profile.uErr.push_back(all.uErr[i]);
-        }
         FitSlipLengthResult one = r;
-        s.mode->fit(s, t, points, one);
+        s.mode->fit(s, t, withVelocities(pts, leaveOneOutVelocities(sums, per, m, left)), one);
         estimates.push_back(s.mode->jackknifed(one));
     }
     std::vector<double> errors;
