@@ -20,6 +20,10 @@ import numpy as np
 
 from dpdfoam.channel import poiseuille_velocity
 from dpdfoam.checks import Checks, write_results
+
+# The profile's own noise (compareFVM's noiseL2) first below a budget, so that the 3 % bound decides:
+# measured 0.0036 in the test (d = 10), less at full size.
+NOISE_BUDGET = 0.01
 from dpdfoam.io import foam_latest_time, foam_vector_field, read_dict
 from dpdfoam.plots import label, plt, save
 
@@ -48,8 +52,8 @@ def main():
     checks = Checks()
     checks.add("simpleFoam = analytic + g h^2/(8 nu) to solver precision (< 1e-8 of u_max)", solver_error < 1e-8,
                f"{solver_error:.2e}")
-    checks.add("DPD vs simpleFoam (nu without walls, no slip): L2 < 3 %", L2 < 0.03,
-               f"L2 = {L2:.4f}, noise L2 = {noise:.4f}, {int(cmp['points'])} bins")
+    checks.bounded(f"DPD vs simpleFoam (nu without walls, no slip): L2 < 3 % (its noise L2 below {NOISE_BUDGET:g})",
+                   L2, noise, NOISE_BUDGET, None, 0.03, f"L2 = {L2:.4f}, noise L2 = {noise:.4f}, {int(cmp['points'])} bins")
     write_results("resultsFVM.dat", [
         f"# DPD channel at time {t} against simpleFoam (time {ft}): nu without walls, no slip",
         f"nu                {nu:.5f}  (viscosity/, no walls)",
