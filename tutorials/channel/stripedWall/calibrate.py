@@ -21,6 +21,18 @@ from dpdfoam.io import read_dict, read_sweep
 from dpdfoam.plots import label, plt, save
 
 
+# The slip length's standard error grows with b (b = u_slip / shear rate): full size 0.10-0.15 where b is
+# below 1, 4-5 % of b from 2.5 to 25 and 13 % at 48 (README, 2026-11-27); the test's shorter runs 0.33 at
+# the stiff end to 3.8 at gamma_L 0.05. A step's budget is the walls' budgets in quadrature, each
+# B_SHARE of b plus a floor; "b does not rise" then allows 3 budgets, fixed by b, not by the run's noise.
+B_SHARE = 0.2
+B_FLOOR = {False: 0.15, True: 0.5}  # key: test
+
+
+def slip_budget(b, test):
+    return B_SHARE * abs(b) + B_FLOOR[test]
+
+
 def option(name, default):
     args = sys.argv[1:]
     return float(args[args.index(name) + 1]) if name in args else default
@@ -68,10 +80,12 @@ def main():
     span = f"b from {b.min():.3f} to {b.max():.3f}"
     checks = Checks()
     order = np.argsort(gammas)
+    test = "-test" in sys.argv[1:]
     for lo, hi in zip(order[:-1], order[1:]):
         step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
-        checks.add(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g}", step > -3 * se,
-                   f"{step:+.4f} +- {se:.4f}")
+        budget = math.hypot(slip_budget(b[lo], test), slip_budget(b[hi], test))
+        checks.bounded(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g} (standard "
+                       f"error below {budget:.3g})", step, se, budget, -3 * budget, None)
     picks = {}
     found = gamma_for(slip_target, gammas, b, err)
     checks.add(f"the sweep brackets b = {slip_target:g} (gammaGas)", found is not None, span)
