@@ -127,7 +127,7 @@ FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictiona
         d.fail("profile", "expected the name of a table in postProcessing/profileBins/<time>/, without '.dat'");
     s.mode->read(s);
     s.superBlocks = readSuperBlockSetup(d);
-    if (s.superBlocks.on && s.mode->jackknifed(FitSlipLengthResult{}).empty())
+    if (s.superBlocks.on() && s.mode->jackknifed(FitSlipLengthResult{}).empty())
         d.fail("superBlocks", "mode " + mode + " has no jackknife over super-blocks yet (mode poiseuille has)");
     return s;
 }
@@ -237,7 +237,7 @@ FitSlipLengthResult fitSlipLength(const FitSlipLengthSetup& s, const ProfileTabl
     r.binsWithoutError = pts.withoutError;
 
     s.mode->fit(s, t, pts.fit, r);
-    if (s.superBlocks.on) jackknifeErrors(s, t, pts, blocks.sums, r);
+    if (s.superBlocks.on()) jackknifeErrors(s, t, pts, blocks.sums, r);
 
     r.densityCentral = centralDensity(t);
     r.gamma = firstMobileGamma(s.model);
@@ -390,7 +390,7 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
     const Dictionary dict = Dictionary::readFile((caseDir / "system" / "fitSlipLengthDict").string());
     const Dictionary props = Dictionary::readFile((caseDir / "constant" / "dpdProperties").string());
     const FitSlipLengthSetup setup = readFitSlipLengthSetup(dict, props);
-    const Dictionary control = setup.superBlocks.on ? Dictionary::readFile((caseDir / "system" / "controlDict").string())
+    const Dictionary control = setup.superBlocks.on() ? Dictionary::readFile((caseDir / "system" / "controlDict").string())
                                                     : Dictionary();
 
     const TimesWithInput selected = selectProfileTimes(o, dict, setup.profile);
@@ -400,7 +400,7 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
         const ProfileTableData table = readProfileTable(tableOf(t));
         const fs::path sampling = caseDir / t.name / "sampling" / (setup.profile + ".h5");
         TableBlocks blocks = readTableBlocks(sampling.string(), table, setup.component);
-        if (setup.superBlocks.on && blocks.blockSamples > 0)
+        if (setup.superBlocks.on() && blocks.blockSamples > 0)
             blocks.sums.blockTime = samplingBlockTime(control, setup.profile, blocks.blockSamples, dict);
         results.push_back(fitSlipLength(setup, table, t.name, blocks));
         results.back().profileFile = (fs::path("postProcessing") / "profileBins" / t.name / (setup.profile + ".dat")).string();

@@ -19,7 +19,6 @@ SuperBlockSetup readSuperBlockSetup(const Dictionary& fitDict) {
         s.minimum = d.getPositive<int>("minimum");
         if (s.minimum < 2) d.fail("minimum", "a jackknife needs at least 2 super-blocks");
     }
-    s.on = true;
     return s;
 }
 

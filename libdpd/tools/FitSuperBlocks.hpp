@@ -23,7 +23,7 @@
 namespace dpd {
 
 struct SuperBlockSetup {
-    bool on = false;
+    bool on() const { return length > 0.0 || decayTimes > 0.0; }  // the entry was given
     double length = 0.0;      // > 0: length given
     double decayTimes = 0.0;  // > 0: decayTimes given
     int minimum = 5;
