@@ -1,8 +1,7 @@
 #pragma once
 // What an integrator asks of System::computeForces: which terms of the DPD pair force, whether the
-// rest of the force list joins them, and how the pass meets the forces the particles hold. The force
-// list itself is written once, in System::computeForces: the DPD pair force, the bonded pairs' share
-// taken back, the body force, the bonds' springs, the walls' forces.
+// rest of the force list joins them (the registered force terms, system/ForceTermTypes.cpp), and how
+// the pass meets the forces the particles hold.
 #include "forces/DpdPairForce.hpp"
 #include "walls/WallStep.hpp"
 

@@ -1,8 +1,6 @@
 #include "system/System.hpp"
 
-#include "forces/BondedPairCorrection.hpp"
 #include "forces/PairForceLoop.hpp"
-#include "parallel/RankChains.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -82,7 +80,7 @@ void System::initialise() {
     bonds.locate(particles);  // every particle is here, in a decomposed run too (before decompose)
     if (ranks && ranks->parallel()) decompose();
     conservative_ = pairs.anyConservative();
-    wallForces_ = walls.anyActsWithForces();
+    buildForceTerms();
     wholePairKernel_ = pairKernelForTerms(conservative_ ? kAllTerms : kAllTerms & ~kConservativeTerm, forceParameters);
     if (box.dimension == 2)
         for (std::size_t i = 0; i < particles.size(); ++i) {
@@ -200,16 +198,7 @@ void System::computeForces(const ForcePass& pass) {
     // The force list, in the order its terms are added.
     addPairForces(pass);
     if (pass.otherTerms) {
-        if (bondedPairsCorrected())
-            correctBondedPairs(bonds, bondedPairs, {pairs, forceParameters, random_, static_cast<std::uint64_t>(step)},
-                               box, particles);
-        bodyForce->apply(particles, frozenOfSpecies_, box);
-        addBondForces();
-        if (wallForces_) {
-            WallStep s = wallStep();
-            s.friction = pass.wallFriction;
-            walls.addForces(s);
-        }
+        for (const auto& term : forceTerms_) term->add(*this, pass);
     }
     if (pass.ghostsHoldOwnersForces) refreshGhostForces();
 }
@@ -234,10 +223,18 @@ void System::addPairForces(const ForcePass& pass) {
     if (kernel) kernel(particles, PairLoopContext{cells_, pairs, random_, stepKey}, forceParameters);
 }
 
-void System::addBondForces() {
-    if (bonds.empty()) return;
-    bondPass_ = bondPotential->addForces(bonds, particles, box);
-    if (domain_) bondPass_ = agreedOverRanks(domain_->communicator(), bondPass_);  // every rank stops together
+void System::buildForceTerms() {
+    forceTerms_.clear();
+    forceTermTypes_.clear();
+    velocityTerms_ = false;
+    const ForceTermRegistry& registry = forceTermRegistry();
+    for (const std::string& type : registry.names()) {
+        std::shared_ptr<const ForceTerm> term = registry.make(type, *this);
+        if (!term) continue;
+        velocityTerms_ = velocityTerms_ || term->readsVelocities();
+        forceTerms_.push_back(std::move(term));
+        forceTermTypes_.push_back(type);
+    }
 }
 
 WallStep System::wallStep() {

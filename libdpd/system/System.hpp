@@ -12,6 +12,7 @@
 #include "neighbour/CellList.hpp"
 #include "parallel/SlabDomain.hpp"
 #include "system/ForcePass.hpp"
+#include "system/ForceTerm.hpp"
 #include "random/PairRandom.hpp"
 #include "walls/WallList.hpp"
 
@@ -27,7 +28,7 @@ struct PairLoopContext;
 struct StepTimes {
     double wrap = 0.0;    // wrapPositions (a step's wrapping is done by sortByCell)
     double sort = 0.0;    // sortByCell
-    double forces = 0.0;  // computeForces: pair forces and body force
+    double forces = 0.0;  // computeForces: the pair force and the force terms after it
     double walls = 0.0;   // applyWalls
     double migrate = 0.0; // a decomposed run's particles sent to the ranks they moved to (in sortByCell)
     double ghosts = 0.0;  // and the neighbours' planes taken in as ghosts (in sortByCell)
@@ -92,18 +93,22 @@ public:
     // std::logic_error for a second Leave before the forces were computed again.
     void sortByCell(SortForces forces = SortForces::Move);
     // The forces of the current positions and velocities that the pass asks for (system/ForcePass.hpp;
-    // by default all of them): the DPD pair force (keyed to the current step's random numbers), the
-    // bonded pairs' share taken back, the body force, the bonds' springs, the walls' forces (tunable
-    // slip), added in that order. Requires sortByCell() since the last move. Throws std::logic_error
+    // by default all of them): the DPD pair force (keyed to the current step's random numbers), then
+    // the registered force terms this scene has (system/ForceTermTypes.cpp: the bonded pairs' share
+    // taken back, the body force, the bonds' springs, the walls' forces), added in that order. Requires sortByCell() since the last move. Throws std::logic_error
     // for a predictor where a force besides the pair force reads the velocities, or a pass that adds
     // to forces a sort left behind.
     void computeForces(const ForcePass& pass = ForcePass::whole());
     // What the last bond pass found: a broken bond (at or beyond the potential's length) stops a run.
     const BondPassResult& bondPass() const { return bondPass_; }
-    // Whether any force but the pair forces depends on the velocities (walls' forces, e.g. friction).
-    // (Taking back part of a bonded pair's DPD force is one: it reads the velocities.)
-    bool hasVelocityDependentNonPairForces() const { return wallForces_ || bondedPairsCorrected(); }
-    bool bondedPairsCorrected() const { return !bonds.empty() && !bondedPairs.keepsAll(); }
+    void recordBondPass(const BondPassResult& found) { bondPass_ = found; }
+    // Whether any force term after the pair force reads the velocities (walls' friction, the bonded
+    // pairs' share of the dissipative force taken back); known once initialise() built the terms.
+    bool hasVelocityDependentNonPairForces() const { return velocityTerms_; }
+    // The registered types of the force terms this scene has, in the order they are added.
+    const std::vector<std::string>& forceTermTypes() const { return forceTermTypes_; }
+    // What the walls act on at this step.
+    WallStep wallStep();
     // The boundary phase once the particles have moved: the clock moves on one step, each wall
     // returns the fluid particles that crossed into it (before wrapping: a particle that crossed a
     // wall lying on a box face is mirrored back, not carried round to the far side), then sortByCell
@@ -131,14 +136,13 @@ public:
     std::size_t countMobile() const;
 
 private:
+    // The registered force terms this scene has (computeForces adds them after the pair force).
+    void buildForceTerms();
     // The pair terms the pass asks for, written over the forces held or added to them.
     void addPairForces(const ForcePass& pass);
-    // The bonds' spring forces (nothing without bonds).
-    void addBondForces();
     WallCounters applyWalls();
     void completeWalls();
     void refreshGhostForces();
-    WallStep wallStep();  // what the walls act on at this step
     void decompose();     // this rank's slab of the box (initialise, with several ranks)
     // Migration and ghosts before a decomposed run's sort, and the sort's order for them.
     void exchangeWithNeighbours();
@@ -158,7 +162,9 @@ private:
     std::vector<long> frozenPerWall_;
     BondPassResult bondPass_;
     bool conservative_ = true;
-    bool wallForces_ = false;  // some wall acts on the fluid with forces
+    std::vector<std::shared_ptr<const ForceTerm>> forceTerms_;  // after the pair force, in the registry's order
+    std::vector<std::string> forceTermTypes_;
+    bool velocityTerms_ = false;  // some term reads the velocities
     bool initialised_ = false;
     bool forcesLeftBySort_ = false;  // the last sort left the forces behind (SortForces::Leave)
     bool cellsFitPositions_ = false;

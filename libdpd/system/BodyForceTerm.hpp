@@ -1,0 +1,14 @@
+#pragma once
+// The System's body force on the mobile particles (forces/BodyForce.hpp), the one it holds at each step.
+#include "system/ForceTerm.hpp"
+
+namespace dpd {
+
+class BodyForceTerm : public ForceTerm {
+public:
+    static std::unique_ptr<ForceTerm> New(const System& system);
+    bool readsVelocities() const override { return false; }
+    void add(System& system, const ForcePass& pass) const override;
+};
+
+}  // namespace dpd

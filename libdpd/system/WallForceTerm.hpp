@@ -1,0 +1,16 @@
+#pragma once
+// The forces walls put on the fluid (the tunable-slip wall's friction layer and its WCA repulsion;
+// walls/SurfaceForce.hpp); only where a wall acts with forces. The friction reads the velocities the
+// pass names (an integrator's predicted ones) or the particles' own.
+#include "system/ForceTerm.hpp"
+
+namespace dpd {
+
+class WallForceTerm : public ForceTerm {
+public:
+    static std::unique_ptr<ForceTerm> New(const System& system);
+    bool readsVelocities() const override { return true; }
+    void add(System& system, const ForcePass& pass) const override;
+};
+
+}  // namespace dpd
