@@ -14,8 +14,9 @@
 // What it cannot decide, and so does not claim: that nu does not depend on the start. Each run
 // equilibrates for 30 time units (3.4 relaxation times tau = (Lz/2)^2 / (pi^2 nu) = 8.7, leaving 3 % of
 // the start's error), but with SE ~0.02 per run the two answers could only be told apart at ~0.11
-// (4 combined SE, 40 % of nu). Resolving a 5 % dependence would take ~60 times the sampling. The independence of the
-// start is instead what the full-size viscosity runs show (tutorials/channel/poiseuille/viscosity and latticeWall/viscosity).
+// (4 combined SE, 40 % of nu). The long test PairPrecisionReferenceTest samples ten times as long and
+// holds the two starts' nu within a tenth of each other; the full-size viscosity runs
+// (tutorials/channel/poiseuille/viscosity and latticeWall/viscosity) resolve it further.
 #include "analysis/PoiseuilleFit.hpp"
 #include "integrators/Integrator.hpp"
 #include "studies/ViscosityProbe.hpp"
