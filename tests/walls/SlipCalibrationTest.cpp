@@ -1,0 +1,151 @@
+// The slip-length calibration (walls/SlipCalibration.hpp): the friction for an asked b, the calibrated
+// range, the key that says which fluid and wall model a calibration holds for, and its file.
+#include "../support/InputErrorOf.hpp"
+#include "core/Error.hpp"
+#include "io/Dictionary.hpp"
+#include "walls/SlipCalibration.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+using namespace dpd;
+namespace fs = std::filesystem;
+
+namespace {
+
+SlipCalibrationKey standardFluidKey() {
+    SlipCalibrationKey k;
+    k.density = 3;
+    k.a = 25;
+    k.gamma = 4.5;
+    k.kT = 1;
+    k.dt = 0.01;
+    k.integrator = "GrootWarren lambda 0.65";
+    TunableSlipParameters wall;  // z_c 1, epsilon 1, sigma 0.5
+    wall.behindA = 25;
+    wall.behindDensity = 3;
+    k.setWallModel(wall);
+    return k;
+}
+
+// b = 3 / gamma_L - 0.4 exactly (the form of the small-alpha prediction), at four frictions.
+SlipCalibration exactCalibration(SlipCalibrationKey key = standardFluidKey()) {
+    std::vector<SlipCalibrationPoint> points;
+    for (double g : {8.0, 0.5, 2.0, 0.25}) points.push_back({g, 3.0 / g - 0.4, 0.01 * g});
+    return SlipCalibration(key, points, 0.3, 0.02, "test");
+}
+
+struct TempDir {
+    fs::path path = fs::temp_directory_path() / ("dpdSlipCalibration-" + std::to_string(::getpid()));
+    TempDir() { fs::create_directories(path); }
+    ~TempDir() { fs::remove_all(path); }
+};
+
+}  // namespace
+
+TEST(SlipCalibration, GivesTheFrictionOfASlipLengthThatIsLinearInItsInverse) {
+    const SlipCalibration c = exactCalibration();
+    EXPECT_DOUBLE_EQ(c.largestSlip(), 11.6);
+    EXPECT_DOUBLE_EQ(c.smallestSlip(), 3.0 / 8.0 - 0.4);
+    for (double g : {0.25, 0.3, 0.5, 1.0, 3.7, 8.0}) {
+        const CalibratedFriction f = c.frictionFor(3.0 / g - 0.4);
+        EXPECT_NEAR(f.gammaL, g, 1e-12 * g) << "b = " << 3.0 / g - 0.4;
+    }
+    // Halfway in b between gamma_L 0.5 and 2 (b 5.6 and 1.1): the error halfway between 0.005 and 0.02.
+    EXPECT_NEAR(c.frictionFor(3.35).slipLengthError, 0.0125, 1e-12);
+}
+
+TEST(SlipCalibration, RefusesASlipLengthOutsideItsRangeNamingTheRange) {
+    const SlipCalibration c = exactCalibration();
+    try {
+        c.frictionFor(12.0);
+        FAIL() << "b beyond the calibration accepted";
+    } catch (const std::out_of_range& e) {
+        EXPECT_NE(std::string(e.what()).find("outside the calibrated range -0.025 to 11.6"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(c.frictionFor(-0.1), std::out_of_range);
+    EXPECT_THROW(c.frictionFor(std::nan("")), std::out_of_range);
+}
+
+TEST(SlipCalibration, RefusesASlipThatDoesNotFallWithTheFriction) {
+    const std::vector<SlipCalibrationPoint> rising{{1.0, 2.0, 0.1}, {2.0, 2.5, 0.1}};
+    EXPECT_THROW(SlipCalibration(standardFluidKey(), rising, 0.3, 0.02, "test"), std::invalid_argument);
+    const std::vector<SlipCalibrationPoint> one{{1.0, 2.0, 0.1}};
+    EXPECT_THROW(SlipCalibration(standardFluidKey(), one, 0.3, 0.02, "test"), std::invalid_argument);
+}
+
+TEST(SlipCalibration, ItsKeyNamesTheFirstEntryThatDiffers) {
+    const SlipCalibrationKey k = standardFluidKey();
+    EXPECT_EQ(k.firstDifference(k), "");
+    SlipCalibrationKey idealGas = k;
+    idealGas.a = 0;
+    EXPECT_EQ(k.firstDifference(idealGas), "fluid/a 25 against 0");
+    SlipCalibrationKey otherStep = k;
+    otherStep.integrator = "GrootWarren lambda 0.5";
+    EXPECT_EQ(k.firstDifference(otherStep), "step/integrator 'GrootWarren lambda 0.65' against 'GrootWarren lambda 0.5'");
+    SlipCalibrationKey tangential = k;
+    tangential.tangentialOnly = true;
+    EXPECT_EQ(k.firstDifference(tangential), "wall/friction full against tangential");
+}
+
+TEST(SlipCalibration, ReadsBackWhatItWrites) {
+    TempDir dir;
+    const std::string file = (dir.path / "slipCalibration").string();
+    Dictionary d(file);
+    exactCalibration().writeTo(d);
+    writeDictionaryFile(file, d);
+    const SlipCalibration back = SlipCalibration::read(Dictionary::readFile(file));
+    EXPECT_EQ(back.key().firstDifference(standardFluidKey()), "");
+    ASSERT_EQ(back.points().size(), 4u);
+    EXPECT_EQ(back.points()[1].gammaL, 0.5);
+    EXPECT_EQ(back.points()[1].slipLength, 5.6);
+    EXPECT_EQ(back.wallOffset(), 0.3);
+    EXPECT_EQ(back.source(), file);
+}
+
+TEST(SlipCalibration, AFileWithListsOfDifferentLengthsIsAnInputErrorAtTheList) {
+    TempDir dir;
+    const std::string file = (dir.path / "slipCalibration").string();
+    Dictionary d(file);
+    exactCalibration().writeTo(d);
+    d.set("slipLengthError", "(0.1 0.2)");
+    writeDictionaryFile(file, d);
+    const std::string message = test::inputErrorOf([&] { SlipCalibration::read(Dictionary::readFile(file)); });
+    EXPECT_NE(message.find("slipLengthError"), std::string::npos) << message;
+    EXPECT_NE(message.find("one error per gammaL"), std::string::npos) << message;
+}
+
+TEST(SlipCalibration, IsFoundInTheCaseOrTheCacheByItsKey) {
+    TempDir dir;
+    fs::create_directories(dir.path / "case" / "constant");
+    fs::create_directories(dir.path / "cache");
+    SlipCalibrationKey idealGas = standardFluidKey();
+    idealGas.a = 0;
+    const std::pair<fs::path, SlipCalibrationKey> files[] = {{dir.path / "case" / "constant" / "slipCalibration", idealGas},
+                                                             {dir.path / "cache" / "standardFluid", standardFluidKey()}};
+    for (const auto& [path, key] : files) {
+        Dictionary d(path.string());
+        exactCalibration(key).writeTo(d);
+        writeDictionaryFile(path.string(), d);
+    }
+    ::setenv("DPD_SLIP_CALIBRATIONS", (dir.path / "cache").c_str(), 1);
+    const std::vector<std::string> searched = slipCalibrationFiles((dir.path / "case").string());
+    ::unsetenv("DPD_SLIP_CALIBRATIONS");
+    ASSERT_EQ(searched.size(), 2u);
+    EXPECT_EQ(searched[0], files[0].first.string()) << "the case's own first";
+    EXPECT_EQ(findSlipCalibration(searched, idealGas).source(), files[0].first.string());
+    EXPECT_EQ(findSlipCalibration(searched, standardFluidKey()).source(), files[1].first.string());
+    SlipCalibrationKey hotter = standardFluidKey();
+    hotter.kT = 1.5;
+    try {
+        findSlipCalibration(searched, hotter);
+        FAIL() << "a fluid without calibration accepted";
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(files[0].first.string() + ": fluid/a 25 against 0"), std::string::npos) << what;
+        EXPECT_NE(what.find(files[1].first.string() + ": fluid/kT 1.5 against 1"), std::string::npos) << what;
+    }
+}
