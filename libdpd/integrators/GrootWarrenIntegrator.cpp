@@ -4,6 +4,8 @@
 #include "integrators/StepParts.hpp"
 #include "system/System.hpp"
 
+#include <sstream>
+
 namespace dpd {
 
 std::unique_ptr<Integrator> GrootWarrenIntegrator::New(const Dictionary& coeffs) {
@@ -11,6 +13,13 @@ std::unique_ptr<Integrator> GrootWarrenIntegrator::New(const Dictionary& coeffs)
     const double lambda = coeffs.getOrDefault<double>("lambda", 0.65);
     if (!(lambda >= 0.0 && lambda <= 1.0)) coeffs.fail("lambda", "must lie in [0, 1]");
     return std::make_unique<GrootWarrenIntegrator>(lambda);
+}
+
+std::string GrootWarrenIntegrator::description() const {
+    std::ostringstream words;
+    words.precision(12);
+    words << name() << " lambda " << lambda_;
+    return words.str();
 }
 
 WallCounters GrootWarrenIntegrator::step(System& sys) {

@@ -23,6 +23,7 @@ public:
     // lambda (default 0.65) in [0, 1].
     static std::unique_ptr<Integrator> New(const Dictionary& coeffs);
     std::string name() const override { return "GrootWarren"; }
+    std::string description() const override;
     double lambda() const { return lambda_; }
     Capabilities capabilities() const override { return {}; }
     WallCounters step(System& sys) override;

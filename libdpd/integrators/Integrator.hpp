@@ -22,6 +22,9 @@ class Integrator {
 public:
     virtual ~Integrator() = default;
     virtual std::string name() const = 0;
+    // The type with the coefficients that change its trajectories, defaults included, as words
+    // ("GrootWarren lambda 0.65"): what a calibration made with it must match.
+    virtual std::string description() const { return name(); }
     // Returns what the walls did during the step.
     virtual WallCounters step(System& sys) = 0;
     // What the scheme cannot run beside (core/Capabilities.hpp), checked once before the first step.

@@ -4,8 +4,10 @@
 #include "core/Error.hpp"
 #include "foam/FoamCaseSpec.hpp"
 #include "io/Dictionary.hpp"
+#include "tools/SlipCalibrationCase.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <ostream>
 #include <stdexcept>
@@ -45,6 +47,39 @@ void printList(std::ostream& out, const char* key, const std::vector<double>& va
     out << ");\n";
 }
 
+// The friction of setting i, read from both of its cases, whose keys must match the first case's.
+double settingFriction(const HydrodynamicWallInput& in, std::size_t i, SlipCalibrationKey& key, std::string& keyCase) {
+    double gammaL = 0.0;
+    for (const std::string& dir : {in.couette[i], in.poiseuille[i]}) {
+        if (!std::filesystem::is_directory(dir))
+            throw std::invalid_argument(dir + ": a calibration reads the runs' cases, not their fit.dat files");
+        const CalibrationCase c = readCalibrationCase(dir);
+        if (keyCase.empty()) { key = c.key; keyCase = dir; }
+        const std::string difference = c.key.firstDifference(key);
+        if (!difference.empty())
+            throw std::invalid_argument(dir + ": not the fluid and wall model of " + keyCase + " (" + difference + ")");
+        if (dir != in.couette[i] && c.gammaL != gammaL)
+            throw std::invalid_argument(dir + ": gammaL " + std::to_string(c.gammaL) + ", its Couette run's " + std::to_string(gammaL));
+        gammaL = c.gammaL;
+    }
+    return gammaL;
+}
+
+// The sweep's slip calibration, written to in.calibration.
+void writeCalibration(const HydrodynamicWallInput& in, const HydrodynamicWallFit& fit) {
+    SlipCalibrationKey key;
+    std::string keyCase;
+    std::vector<SlipCalibrationPoint> points;
+    for (std::size_t i = 0; i < in.couette.size(); ++i)
+        points.push_back({settingFriction(in, i, key, keyCase), fit.slipLength[i], fit.slipLengthErr[i]});
+    const SlipCalibration calibration(key, points, fit.offset, fit.halfWidthErr,
+                                      "hydrodynamicWall, " + std::to_string(points.size()) + " frictions from " + keyCase +
+                                          " and its sweep");
+    Dictionary d(in.calibration);
+    calibration.writeTo(d);
+    writeDictionaryFile(in.calibration, d);
+}
+
 }  // namespace
 
 void printHydrodynamicWall(const HydrodynamicWallInput& in, std::ostream& out) {
@@ -65,6 +100,7 @@ void printHydrodynamicWall(const HydrodynamicWallInput& in, std::ostream& out) {
         settings.push_back({c.slip, c.slipErr, p.slip, p.slipErr});
     }
     const HydrodynamicWallFit fit = fitHydrodynamicWall(width, settings);
+    if (!in.calibration.empty()) writeCalibration(in, fit);  // refused before anything is printed
     out << std::setprecision(8) << std::left;
     out << std::setw(24) << "width" << width << ";\n"
         << std::setw(24) << "halfWidth" << fit.halfWidth << ";\n"
@@ -83,6 +119,7 @@ void printHydrodynamicWall(const HydrodynamicWallInput& in, std::ostream& out) {
     printList(out, "apparentSlipPoiseuilleError", column(&ApparentSlip::poiseuilleErr));
     printList(out, "slipLength", fit.slipLength);
     printList(out, "slipLengthError", fit.slipLengthErr);
+    if (!in.calibration.empty()) out << std::setw(24) << "calibration" << '"' << in.calibration << "\";\n";
 }
 
 }  // namespace dpd

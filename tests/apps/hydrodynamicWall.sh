@@ -51,4 +51,36 @@ expectError $? "$log" "p2/postProcessing/fitSlipLength/100/fit.dat" "mode" "give
 mkdir -p "$work/empty"
 "$bin/hydrodynamicWall" -couette "$work/empty" "${couette[@]:1}" -poiseuille "${poiseuille[@]}" > "$log" 2>&1
 expectError $? "$log" "empty/postProcessing/fitSlipLength" "run fitSlipLength"
+# -calibration: the same runs as a tunable-slip wall's friction sweep (the stripedWall tutorial's
+# calibration case at gamma_L 0.5, 1, 2, 4 for b 2, 1, 0.4, 0) make a slip calibration with the known
+# wall offset and slip lengths; a run of another fluid is refused by the entry that differs, and then
+# no file is written.
+src=$2
+gammas=(0.5 1 2 4)
+k=0
+for b in 2 1 0.4 0; do
+    for c in "$work/c$b" "$work/p$b"; do
+        cp -r "$src/tutorials/channel/stripedWall/calibration/couette/"{constant,system} "$c/"
+        for wall in lower upper; do
+            "$bin/dpdDictionary" "$c/constant/dpdProperties" -entry walls/$wall/tunableSlip/gammaL -set "${gammas[k]}" > /dev/null
+        done
+    done
+    k=$((k + 1))
+done
+calibration=$work/slipCalibration
+"$bin/hydrodynamicWall" -couette "${couette[@]}" -poiseuille "${poiseuille[@]}" -calibration "$calibration" > "$log" 2>&1 ||
+    fail "hydrodynamicWall -calibration failed: $(cat "$log")"
+entry() { sed -n "s/^$1  *\([^;]*\);.*/\1/p" "$calibration"; }
+[ "$(entry gammaL)" = "(0.5 1 2 4)" ] || fail "calibration gammaL '$(entry gammaL)', made with (0.5 1 2 4)"
+closeTo "$(entry wallOffset)" 0.3 1e-6 "the calibration's wallOffset (made with 0.3)"
+read -r -a calibrated <<< "$(entry slipLength | tr -d '()')"
+for k in 0 1 2 3; do
+    closeTo "${calibrated[k]:-}" "${expected[k]}" 1e-6 "calibrated slip length $k (made with ${expected[k]})"
+done
+grep -q 'integrator *"GrootWarren lambda 0.65";' "$calibration" || fail "the calibration's integrator: $(grep integrator "$calibration")"
+rm "$calibration"
+"$bin/dpdDictionary" "$work/p0.4/constant/dpdProperties" -entry pairCoeffs/fluid-fluid/a -set 0 > /dev/null
+"$bin/hydrodynamicWall" -couette "${couette[@]}" -poiseuille "${poiseuille[@]}" -calibration "$calibration" > "$log" 2>&1
+expectError $? "$log" "p0.4: not the fluid and wall model of" "fluid/a 0 against 25"
+[ ! -e "$calibration" ] || fail "a refused calibration left a file"
 finishTests hydrodynamicWall

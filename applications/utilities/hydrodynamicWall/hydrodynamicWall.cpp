@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
         cl.addOptions()("couette", po::value<std::vector<std::string>>(&in.couette)->multitoken()->required(),
                         "the Couette runs (cases or fit.dat files), one per wall setting")(
             "poiseuille", po::value<std::vector<std::string>>(&in.poiseuille)->multitoken()->required(),
-            "the Poiseuille runs of the same settings, in the same order");
+            "the Poiseuille runs of the same settings, in the same order")(
+            "calibration", po::value<std::string>(&in.calibration),
+            "write the slip calibration of a tunable-slip wall's friction sweep (the runs' cases) to this file");
         if (!cl.parse(argc, argv)) return;
         dpd::printHydrodynamicWall(in, std::cout);
     });
