@@ -1,6 +1,7 @@
 #!/bin/bash
-# Issue 45's rule on broken inputs, on the check functions of three tutorials (no simulation, no
-# executables: plain numbers): tutorials/channel/stripedWall (the slip tensor against the continuum
+# Issue 45's rule on broken inputs, on the check functions of four tutorials (no simulation, no
+# executables: plain numbers): tutorials/channel/tunableSlip (the slip length against the prediction
+# from the layer's density, the ideal gas's Boltzmann layer, no crossing), tutorials/channel/stripedWall (the slip tensor against the continuum
 # reference, the flux's turn, zero flux, linearity in the force, the fluid at rest),
 # tutorials/channel/slipGammaFw (the slip's rise with falling gamma_fw) and
 # tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu against the
@@ -41,6 +42,7 @@ def load(name, case):
 
 
 sw, sg, lw = load("stripedWall", "stripedWall"), load("slipGammaFw", "slipGammaFw"), load("latticeWall", "poiseuille/latticeWall")
+ts = load("tunableSlip", "tunableSlip")
 wc = sys.modules["wallComparison"]
 wrong = 0
 
@@ -139,6 +141,41 @@ broken("latticeWall nu against no walls (full size)", nu, (0.27376, 0.00021, 0.2
 expect("latticeWall nu: nu without walls missing", False, lambda c: nu(c, 0.27376, 0.00021, None, 0.00091, 0.01))
 short = types.SimpleNamespace(too_short="runs sampled 40 blocks of 25: fewer than 5 super-blocks of 2 tau1 = 1200")
 expect("latticeWall too few super-blocks: no verdict fails", False, lambda c: lw.wall_pairs(c, [], [short] * 3, 600.0))
+# tunableSlip. check(rows, test): the README's full-size rows (a = 0, 2026-11-28); each broken row
+# must fail a check: a NaN slip, error or layer density, a slip error over its budget, a slip just
+# outside the prediction's bound, a slip of the wrong sign, a halved layer density, no alpha_eff.
+TS_FULL = [(0.25, 11.97, 0.17, 0.147, 13.14, 1.4828, 1.4800), (0.5, 5.68, 0.09, 0.295, 6.30, 1.4834, 1.4797),
+           (1, 2.71, 0.07, 0.574, 3.01, 1.4858, 1.4779), (2, 1.02, 0.03, 1.168, 1.23, 1.4827, 1.4793),
+           (4, 0.30, 0.02, 2.324, 0.37, 1.4776, 1.4796)]
+
+
+def ts_rows(**changed):
+    """The full-size rows, with row gamma_L 0.25's entries replaced by `changed` (key: value)."""
+    rows = [dict(gammaL=g, bMeasured=b, bError=e, alphaEff=al, bPredictedEff=bp, rhoNearWall=layer,
+                 rhoNearWallIdeal=ideal, rhoNearWallError=0.0021, crossed=0, a=0.0)
+            for g, b, e, al, bp, layer, ideal in TS_FULL]
+    rows[0].update(changed)
+    return rows
+
+
+def ts_check(rows):
+    return lambda c: c.include(ts.check(rows, test=False))
+
+
+expect("tunableSlip full size", True, ts_check(ts_rows()))
+TS_BUDGET = ts.b_error_budget(13.14, test=False)
+TS_BOUND = 0.15 * 13.14 + 3 * TS_BUDGET
+for what, changed in (("slip NaN", dict(bMeasured=NAN)), ("slip missing", dict(bMeasured=None)),
+                      ("slip error NaN", dict(bError=NAN)), ("slip error over its budget", dict(bError=TS_BUDGET + 0.01)),
+                      ("slip just below the prediction's bound", dict(bMeasured=13.14 - TS_BOUND - 0.01)),
+                      ("slip just above the prediction's bound", dict(bMeasured=13.14 + TS_BOUND + 0.01)),
+                      ("slip of the wrong sign", dict(bMeasured=-11.97)), ("alpha_eff NaN", dict(alphaEff=NAN)),
+                      ("layer density NaN", dict(rhoNearWall=NAN)), ("layer density halved", dict(rhoNearWall=0.74)),
+                      ("layer's error over its budget", dict(rhoNearWallError=0.01)),
+                      ("a particle crossed the wall", dict(crossed=1))):
+    expect(f"tunableSlip gamma_L 0.25: {what}", False, ts_check(ts_rows(**changed)))
+expect("tunableSlip slip just inside the prediction's bound", True,
+       ts_check(ts_rows(bMeasured=13.14 - TS_BOUND + 0.01)))
 print(f"{wrong} wrong")
 EOF
 )

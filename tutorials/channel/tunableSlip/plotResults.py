@@ -20,7 +20,7 @@ import sys
 
 import numpy as np
 
-from dpdfoam.checks import Checks, print_file
+from dpdfoam.checks import Checks, as_number, print_file
 from dpdfoam.io import dictionary_value, latest_fit, latest_profile, log_values, read_text
 from dpdfoam.plots import label, plt, save
 
@@ -146,6 +146,8 @@ def plot(rows, path):
 
 
 def check(rows, test):
+    # A missing or empty entry reads as NaN, which fails the checks that read it.
+    rows = [{k: (v if k == "gammaL" or isinstance(v, (int, float)) else as_number(v)) for k, v in r.items()} for r in rows]
     checks = Checks()
     for r in rows:
         checks.add(f"gammaL {r['gammaL']}: no particle crossed a WCA wall", r["crossed"] == 0, f"{r['crossed']} crossed")
