@@ -29,8 +29,8 @@
 // bounds), a random force not matched to its dissipation (kT), an equilibration that does not forget the start by the tenth of nu. What they
 // cannot: effects of a few per cent on nu, which the tutorials' viscosity runs resolve. (kT 1.01 is
 // velocity Verlet's own error at dt 0.02, the same in both.) About 2.5 minutes on one thread.
+#include "ProbeFluid.hpp"
 #include "integrators/Integrator.hpp"
-#include "setup/StandardFluid.hpp"
 #include "studies/TemperatureProbe.hpp"
 #include "studies/ViscosityProbe.hpp"
 #include "system/System.hpp"
@@ -114,17 +114,9 @@ public:
 
 std::unique_ptr<Integrator> productionVelocityVerlet() { return makeIntegrator(IntegratorSettings::parse("type GrootWarren; lambda 0.5;")); }
 
-// The standard fluid, 750 particles in 5 x 5 x 10, equilibrated, at dt 0.02.
+// The probes' fluid (ProbeFluid.hpp), its forces those of dt 0.02 (the random term's scale).
 System restingFluid() {
-    StandardFluidSettings f;
-    f.particles = 750;
-    f.aspect = Eigen::Vector3d(1, 1, 2);
-    f.dt = 0.01;
-    f.seed = 5;
-    System fluid = makeStandardFluid(f);
-    auto gw = makeIntegrator(IntegratorSettings{});
-    for (int k = 0; k < 1000; ++k) gw->step(fluid);
-    fluid.forceParameters.dt = 0.02;
+    System fluid = test::equilibratedProbeFluid();
     fluid.computeForces();
     return fluid;
 }

@@ -17,6 +17,7 @@
 // (4 combined SE, 40 % of nu). The long test PairPrecisionReferenceTest samples ten times as long and
 // holds the two starts' nu within a tenth of each other; the full-size viscosity runs
 // (tutorials/channel/poiseuille/viscosity and latticeWall/viscosity) resolve it further.
+#include "ProbeFluid.hpp"
 #include "analysis/PoiseuilleFit.hpp"
 #include "integrators/Integrator.hpp"
 #include "studies/ViscosityProbe.hpp"
@@ -30,16 +31,8 @@
 using namespace dpd;
 
 TEST(ViscosityProbe, ReversePoiseuilleGivesAParabolaAndAPlausibleViscosityFromEitherStart) {
-    StandardFluidSettings f;
-    f.particles = 750;
-    f.aspect = Eigen::Vector3d(1, 1, 2);
-    f.dt = 0.01;
-    f.seed = 5;
-    System fluid = makeStandardFluid(f);
+    const System fluid = test::equilibratedProbeFluid();
     EXPECT_NEAR(fluid.box.length().z(), 10.0, 1e-9);
-    auto gw = makeIntegrator(IntegratorSettings{});
-    for (int k = 0; k < 1000; ++k) gw->step(fluid);
-    fluid.forceParameters.dt = 0.02;
     ViscosityProbeSettings s;
     s.g = 0.08;
     s.bins = 20;
