@@ -71,11 +71,27 @@ def broken(what, add, good, bound_value, noisy):
     expect(f"{what}: just outside the bound", False, lambda c: add(c, bound_value, *good[1:]))
 
 
-# stripedWall. compare(checks, label, measured, run error, reference, calibration error, wall error,
-# budget): the angle sweep's b_par at full size (README 2026-11-27: 1.143 +- 0.029 against 1.0486,
+# stripedWall. against(checks, label, measured, run error, reference, key, wall error, budget), here
+# through cmp(checks, measured, run error, reference value, calibration error, wall error, budget): the angle sweep's b_par at full size (README 2026-11-27: 1.143 +- 0.029 against 1.0486,
 # calibration 0.098, wall 0.091), budget 0.16, bound 3 x 0.16 = 0.48.
+class Reference:
+    """A reference of one value and its calibration error (stripedSlip's, fixed)."""
+    def __init__(self, value, error):
+        self.value, self.err = value, error
+
+    def at(self, key, angle=None):
+        return self.value
+
+    def error(self, key, angle=None):
+        return self.err
+
+
+def compare(c, label, m, e, ref, ce, we, budget):
+    return sw.against(c, label, m, e, Reference(ref, ce), "slipParallel", we, budget)
+
+
 B = sw.budget("b, angle sweep", test=False)
-cmp = lambda c, m, e, *rest: sw.compare(c, "b_par", m, e, *rest)
+cmp = lambda c, m, e, *rest: compare(c, "b_par", m, e, *rest)
 broken("stripedWall b_par", cmp, (1.143, 0.029, 1.0486, 0.098, 0.091, B), 1.0486 + 3 * B + 0.001, 0.12)
 expect("stripedWall b_par just inside the bound", True, lambda c: cmp(c, 1.0486 + 3 * B - 0.001, 0.029, 1.0486, 0.098, 0.091, B))
 # The old bound, max(3 standard errors, 5 %), let a noisy run pass further off: 0.6 from the reference
@@ -93,7 +109,7 @@ full = [("b, angle sweep", 0.724, 0.021, 0.6520, 0.0995, 0.091), ("b, one run", 
         ("flux ratio, one run", 0.027, 0.017, 0.0161, 0.0002, 0), ("flux ratio, one run", 0.053, 0.006, 0.0396, 0.0011, 0)]
 for kind, m, e, ref, ce, we in full:
     expect(f"stripedWall full size, {kind}: {m} +- {e} against {ref}", True,
-           lambda c: sw.compare(c, kind, m, e, ref, ce, we, sw.budget(kind, test=False)))
+           lambda c: compare(c, kind, m, e, ref, ce, we, sw.budget(kind, test=False)))
 Z = sw.budget("zero flux", test=False)
 broken("stripedWall zero flux at theta 90", lambda c, r, e, b: sw.zero_flux(c, 90, r, e, b), (-0.008, 0.009, Z), -3 * Z - 0.001, 0.02)
 T = sw.budget("the flow turns", test=False)
@@ -109,7 +125,7 @@ broken("stripedWall kT at rest", rest, (1.0008, 0.0015, 1.0019, 0.0015, R), 1.00
 # slipGammaFw. monotonic_checks(checks, label, gammas, b, errors, step budget, rise budget): the
 # full-size 2-D, 3-D and plane-near-the-row sweeps (README) at their full-size budgets.
 G = [1, 2, 4.5, 13.5]
-mono = lambda label, b, e: (lambda c: sg.monotonic_checks(c, label, G, b, e, *sg.MONOTONIC_BUDGETS[label]["full"]))
+mono = lambda label, b, e: (lambda c: sg.slip_falls_checks(c, label, "gamma_fw", G, b, e, *sg.MONOTONIC_BUDGETS[label]["full"]))
 two, two_e = [0.4850, 0.4399, 0.4047, 0.2828], [0.013, 0.023, 0.013, 0.011]
 expect("slipGammaFw 2-D full size", True, mono("2-D", two, two_e))
 expect("slipGammaFw 3-D full size (1 and 2 the same within 0.0106)", True,
@@ -133,14 +149,14 @@ expect("slipGammaFw 2-D: the rise just short of 3 budgets", False,
 agree = lambda c, d, s, b: wc.agreement_check(c, "nu", "mask", "lattice", d, s, b)
 P = wc.PAIR_BUDGETS["nu"]
 broken("latticeWall nu, mask and lattice walls", agree, (0.0027, 0.0027, P), 3 * P + 0.0001, 0.006)
-S = lw.SLIP_BOUND
-slip = lambda c, b, e, budget: lw.no_slip_check(c, "lower mask wall", b, e, budget)
+S = wc.SLIP_BOUND
+slip = lambda c, b, e, budget: wc.no_slip_check(c, "lower mask wall", b, e, budget)
 broken("latticeWall no slip (full size, lattice)", slip, (0.0162, 0.0091, lw.LATTICE_SLIP_BUDGET[0]), S + 0.001, 0.04)
-nu = lambda c, v, e, ref, ref_e, b: lw.nu_check(c, "lattice walls", v, e, ref, ref_e, b)
+nu = lambda c, v, e, ref, ref_e, b: wc.nu_check(c, "lattice walls", v, e, ref, ref_e, b)
 broken("latticeWall nu against no walls (full size)", nu, (0.27376, 0.00021, 0.27490, 0.00091, 0.01), 0.27490 * 1.0301, 0.003)
 expect("latticeWall nu: nu without walls missing", False, lambda c: nu(c, 0.27376, 0.00021, None, 0.00091, 0.01))
 short = types.SimpleNamespace(too_short="runs sampled 40 blocks of 25: fewer than 5 super-blocks of 2 tau1 = 1200")
-expect("latticeWall too few super-blocks: no verdict fails", False, lambda c: lw.wall_pairs(c, [], [short] * 3, 600.0))
+expect("latticeWall too few super-blocks: no verdict fails", False, lambda c: wc.wall_pairs(c, [], [short] * 3, 600.0))
 # tunableSlip. check(rows, test): the README's full-size rows (a = 0, 2026-11-28); each broken row
 # must fail a check: a NaN slip, error or layer density, a slip error over its budget, a slip just
 # outside the prediction's bound, a slip of the wrong sign, a halved layer density, no alpha_eff.

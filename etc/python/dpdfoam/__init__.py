@@ -19,6 +19,13 @@ Modules:
     mask        an image mask's regions: solid on the bins, distance to it, pore size, an open band
     contraction the contraction tutorials' scene (tutorials/contraction/*)
     pair_temperature  a bulk's kT split into heat and shared motion (etc/pairTemperature.py)
+    timeseries  a run's time series (snapshots' measures, logs) as super-block means
+    grid        a 2-D profile table averaged along one axis, its region means, a column as an image
+    slip        tunable-slip and striped walls: gamma_L for a slip length, slipTensor's runs, stripedSlip's
+                reference with its calibration error, a stripeGrid's layers over the stripes' sectors
+    fields      an x-z grid of bins as arrays, a continuum twin's cells on it, relative L2, the bins' kT
+    sweep       runSweep's sweeps of a wall parameter (variant, slip, published comparison, trend checks,
+                profiles), a profile near its walls, channels compared with long-block errors
 
 The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip,
 chainScaling): the package reads their results (fitSlipLength's superBlocks entry gives the jackknife

@@ -4,10 +4,16 @@ The sampling blocks of a channel (a few time units) are shorter than its slowest
 (tau1 = d^2 / (pi^2 nu)), so their spread underestimates the error of a mean: consecutive blocks are
 joined into super-blocks about two tau1 long, the latest ones kept (docs/analysis.md 5.2). The sums
 per bin follow sampling/BinProfile.cpp: particle-samples, sums of v (3), of v^2 (3), of x, x^2, and
-of v x (3) along the bin's axis.
+of v x (3) along the bin's axis. Besides: the super-blocks' means over a region of bins (a mean
+velocity, kT, a share of the particles within a band) and a channel's asymmetry u(z) - u(-z).
 """
+import math
+import sys
+
 import h5py
 import numpy as np
+
+from .stats import BlockMean, count_weighted_mean
 
 
 class SampledBins:
@@ -58,3 +64,49 @@ def temperature(sums):
             cov = sums[..., 9 + c] / n - mean_v * mean_x
             total = total + var_v - cov ** 2 / var_x
         return total / 3.0
+
+
+def region_mean(sums, weights, region):
+    """Per super-block (rows), a sum over the region's bins over their weights' (a mass-weighted mean
+    velocity: the sums of v over the particle-samples)."""
+    return sums[:, region].sum(axis=1) / weights[:, region].sum(axis=1)
+
+
+def region_temperature(sums, region):
+    """kT of the region's bins, weighted by their particle-samples: per super-block of sums (blocks,
+    bins, sums), or of the whole window from sums (bins, sums)."""
+    return count_weighted_mean(temperature(sums)[..., region], sums[..., region, 0])
+
+
+def overlap(z, width, lo, hi):
+    """The share of each bin (centres z, width) that lies in [lo, hi]."""
+    return np.clip((np.minimum(z + 0.5 * width, hi) - np.maximum(z - 0.5 * width, lo)) / width, 0.0, 1.0)
+
+
+def band_share(count, z, width, lo, hi):
+    """The share of the particle-samples (count along the last axis: per bin) within [lo, hi], the bins
+    straddling an edge by the share of them inside."""
+    return (count * overlap(z, width, lo, hi)).sum(axis=-1) / count.sum(axis=-1)
+
+
+def mirror_asymmetry(z, centre, count, sum_u):
+    """A channel's asymmetry from super-block sums (count, sum of u_x: (blocks, bins)) of bins symmetric
+    about the centre: u(z) - u(-z) per mirrored pair ("z": the distance from the centre, "du", its
+    standard error "err"), the two halves' mean velocities apart ("A" = U(upper) - U(lower), a
+    BlockMean), chi^2 per pair against zero ("chi2", over "pairs"), and the pairs' rms ("rms"), the rms
+    of their errors ("noise") and the largest ("max")."""
+    n, m = len(z), count.shape[0]
+    upper = np.arange((n + 1) // 2, n)
+    lower = n - 1 - upper
+    if not np.allclose(z[upper] - centre, centre - z[lower]):
+        sys.exit(f"plotResults: the profile's bins are not symmetric about the channel's centre {centre:g}")
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u = sum_u / count
+    du = u[:, upper] - u[:, lower]
+    mean, error = du.mean(axis=0), du.std(axis=0, ddof=1) / math.sqrt(m)
+    good = np.isfinite(mean) & (error > 0)
+    return {"z": z[upper] - centre, "du": mean, "err": error,
+            "A": BlockMean(region_mean(sum_u, count, upper) - region_mean(sum_u, count, lower)),
+            "chi2": float(np.mean((mean[good] / error[good]) ** 2)), "pairs": int(good.sum()),
+            "rms": float(np.sqrt(np.mean(mean[good] ** 2))), "noise": float(np.sqrt(np.mean(error[good] ** 2))),
+            "max": float(np.max(np.abs(mean[good])))}

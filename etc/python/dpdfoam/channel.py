@@ -41,8 +41,9 @@ def no_wall_reference(case="viscosity", profile="viscosityProfile"):
             "kT_of_shear": kT_against_shear(periodic, body_force(case), fit["nu"])}
 
 
-def walls_mean_slip(sweep):
+def walls_mean_slip(sweep, name="slipLength"):
     """Per run of a sweep, the slip length of the two walls' mean and its standard error (a fluctuation
-    of the channel's mean velocity moves the two walls' slip in opposite directions and cancels here)."""
-    b = 0.5 * (np.asarray(sweep["slipLength_0"]) + np.asarray(sweep["slipLength_1"]))
-    return b, 0.5 * np.hypot(sweep["slipLengthError_0"], sweep["slipLengthError_1"])
+    of the channel's mean velocity moves the two walls' slip in opposite directions and cancels here).
+    name: the columns' stem (<name>_0, <name>Error_0, ...; slipTensor's slipParallel, slipPerpendicular)."""
+    b = 0.5 * (np.asarray(sweep[name + "_0"]) + np.asarray(sweep[name + "_1"]))
+    return b, 0.5 * np.hypot(sweep[name + "Error_0"], sweep[name + "Error_1"])

@@ -116,6 +116,13 @@ class Checks:
         return 1 if self.failures() else 0
 
 
+def relative_difference(value, error, reference, reference_error):
+    """value / reference - 1 and its standard error (the two errors independent, relative to the
+    reference); a missing or non-numeric number reads as NaN (as_number), which fails the check."""
+    value, error, reference, reference_error = (as_number(v) for v in (value, error, reference, reference_error))
+    return value / reference - 1.0, math.hypot(error, reference_error) / reference
+
+
 def write_results(path, lines, checks=None):
     """A results file: the lines, then the checks' lines; printed as written."""
     with open(path, "w") as f:

@@ -91,6 +91,12 @@ def dictionary_number(path, entry, default=None):
         return default
 
 
+def dictionary_numbers(path, entries, **defaults):
+    """Several numbers of a case dictionary: {name: dictionary_number(path, entry, its default)} for
+    entries {name: entry}, the defaults given by name (kT=1.0)."""
+    return {name: dictionary_number(path, entry, defaults.get(name)) for name, entry in entries.items()}
+
+
 def vector(text):
     """A dictionary's vector '(a b c)' as an array."""
     return np.array([float(v) for v in text.strip("()").split()])
@@ -215,3 +221,9 @@ def foam_vector_field(path):
     numbers = re.findall(r"[-+0-9.eE]+", body[start:].replace("(", " ").replace(")", " "))
     return np.array(numbers[: 3 * n], dtype=float).reshape(n, 3)
 
+
+def foam_latest_fields(case, *names):
+    """The latest time (after 0) of an OpenFOAM case, as its name, and its ascii vector fields `names`
+    there (foam_vector_field)."""
+    t = foam_latest_time(case)
+    return t, [foam_vector_field(os.path.join(case, t, name)) for name in names]

@@ -1,6 +1,6 @@
 """Regions of an image mask (a geometry { type imageMask; } of constant/dpdProperties): its solid at the
 centres of a case's bins, the distance to the solid and the local pore size of the fluid, and the open
-band of rows fluid across the whole width (a crack along x)."""
+band of rows fluid across the whole width (a crack along x), in pixels and in the box's units."""
 import numpy as np
 
 from .io import dictionary_value, vector
@@ -78,3 +78,23 @@ def open_band(solid):
     centre = first + length // 2
     widths = [n for column in ~solid.T for a, n in runs(column) if a <= centre < a + n]
     return (first, first + length - 1), np.array(widths)
+
+
+def middle_of_first_run(flags):
+    """The middle index of the first run of True in a 1-D array."""
+    a, n = runs(flags)[0]
+    return a + (n - 1) // 2
+
+
+def crack_in_box(solid, lo, hi):
+    """open_band in the box's units (the mask covering [lo, hi] in x and z): the crack's band (lower z,
+    upper z), its opening per column (pixels), and the x of its narrowest and of its widest column (the
+    middle of the first run of each). None without a crack."""
+    crack = open_band(solid)
+    if crack is None:
+        return None
+    (first, last), widths = crack
+    pixel = (hi - lo) / solid.shape[::-1]  # (x, z) size of a pixel
+    band_z = lo[1] + first * pixel[1], lo[1] + (last + 1) * pixel[1]
+    sections = [lo[0] + (middle_of_first_run(widths == w) + 0.5) * pixel[0] for w in (widths.min(), widths.max())]
+    return band_z, widths, sections

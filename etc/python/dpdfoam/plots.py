@@ -43,13 +43,31 @@ def draw_kT_of_shear(ax, centre, kT_of_shear, g, nu, half_width=None, label="no-
         ax.plot(centre + side * shear[inside] * nu / g, kT_box[inside], "k--", lw=0.8, label=label if side == 1 else None)
 
 
+def draw_field(fig, ax, field, extent, title, bar_label, title_size=None, **style):
+    """A 2-D field (rows z, columns x) as a picture over extent with its colour bar (viridis unless style
+    says otherwise) and its title."""
+    im = ax.imshow(field, origin="lower", extent=extent, **{"cmap": "viridis", **style})
+    fig.colorbar(im, ax=ax, label=bar_label)
+    ax.set_title(title, **({} if title_size is None else {"fontsize": title_size}))
+
+
 def draw_map(fig, ax, grid, column, title, cmap="viridis"):
     """A column of a 2-D profile table (x, z, ...) as a picture with its colour bar."""
     xs, zs = np.unique(grid["x"]), np.unique(grid["z"])
-    im = ax.imshow(grid[column].reshape(len(zs), len(xs)), origin="lower", extent=[xs[0], xs[-1], zs[0], zs[-1]],
-                   aspect="equal", cmap=cmap)
-    fig.colorbar(im, ax=ax, label=column)
-    ax.set_title(title)
+    draw_field(fig, ax, grid[column].reshape(len(zs), len(xs)), [xs[0], xs[-1], zs[0], zs[-1]], title, column,
+               aspect="equal", cmap=cmap)
+
+
+def draw_compare_lines(ax, profiles, lines, nu):
+    """compareFVM's lines (its profiles.dat: x z uDPD uDPDErr uFVM u_<line>): on each line the DPD bins
+    with their errors and the continuum's velocity, against the position along the line's longer extent."""
+    for name in lines:
+        on = np.isfinite(profiles["u_" + name])
+        along = "x" if np.ptp(profiles["x"][on]) >= np.ptp(profiles["z"][on]) else "z"
+        dots = ax.errorbar(profiles[along][on], profiles["uDPD"][on], yerr=profiles["uDPDErr"][on], fmt="o", ms=2,
+                           label=f"DPD (bins on the line {name}, {on.sum()})")
+        ax.plot(profiles[along][on], profiles["u_" + name][on], "-", color=dots[0].get_color(), lw=1.2,
+                label=f"simpleFoam, nu = {nu:.4f}")
 
 
 def save(fig, path, dpi=110, **layout):

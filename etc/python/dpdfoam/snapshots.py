@@ -1,8 +1,17 @@
 """Reading the solver's snapshots (<time>/particles.h5): the box, whether two hold the same particles,
 and the chains' bonds (io/SnapshotBonds.hpp: each bond its two ids, the chain and the vector from its
-first bead to its second, followed across the periodic box)."""
+first bead to its second, followed across the periodic box), the chains unwrapped from them and
+their shapes; the chains' shapes of every snapshot in a profile's sampled window as a table (the
+command tutorials/polymer/channel/chainExtension.py).
+"""
+import glob
+import os
+import sys
+
 import h5py
 import numpy as np
+
+from .io import dictionary_value
 
 
 def snapshot_box(path):
@@ -61,3 +70,77 @@ def unwrapped_chains(path):
             points.append(points[-1] + v)
         out[int(c)] = np.array(points)
     return out
+
+
+def chain_shapes(path, axis, flow=0):
+    """Per chain of a snapshot (in chain order), unwrapped: (chain, its centre along `axis` (the mean
+    bead coordinate), its extent along `flow` (max - min bead coordinate), R_g^2, and the square of the
+    end-to-end vector's `flow` component)."""
+    rows = []
+    for chain, p in sorted(unwrapped_chains(path).items()):
+        d = p - p.mean(axis=0)
+        rows.append((chain, p[:, axis].mean(), np.ptp(p[:, flow]), float(np.mean(np.sum(d * d, axis=1))),
+                     (p[-1, flow] - p[0, flow]) ** 2))
+    return rows
+
+
+def chains_in_box(path):
+    """The box's corners and every chain unwrapped (in chain order), each shifted by whole box lengths
+    along x so that its centre lies in the box (for a picture along x)."""
+    lo, hi = snapshot_box(path)
+    length = hi[0] - lo[0]
+    chains = [p - [length * np.floor((p[:, 0].mean() - lo[0]) / length), 0.0, 0.0]
+              for _, p in sorted(unwrapped_chains(path).items())]
+    return lo, hi, chains
+
+
+# ---- The chains' shapes over a binnedProfile's sampled window (chainExtension.py) ---------------------
+
+AXES = {"x": 0, "y": 1, "z": 2}
+EXTENSION_COLUMNS = "time chain centre spanx Rg2 Reex2"
+
+
+def extension_window(case, function):
+    """A binnedProfile function's axis, its sampled window (its startTime to the run's endTime,
+    system/controlDict) and the window's table, postProcessing/chainExtension/<start>/chainExtension.dat."""
+    control = os.path.join(case, "system/controlDict")
+    axis = dictionary_value(control, f"functions/{function}/axis").strip()
+    start = float(dictionary_value(control, f"functions/{function}/startTime"))
+    table = os.path.join(case, "postProcessing/chainExtension", f"{start:g}", "chainExtension.dat")
+    return AXES[axis], start, float(dictionary_value(control, "endTime")), table
+
+
+def measure_extension(case, function):
+    """One row per chain of every snapshot (<time>/particles.h5) in the window, in time and chain order:
+    the time, then chain_shapes' columns (the centre along the profile's axis, the extent along x); and
+    the table's path."""
+    axis, start, end, table = extension_window(case, function)
+    rows = []
+    for path in glob.glob(os.path.join(case, "[0-9]*", "particles.h5")):
+        t = float(os.path.basename(os.path.dirname(path)))
+        if start <= t <= end:
+            rows += [(t, *shape) for shape in chain_shapes(path, axis)]
+    rows.sort()
+    return np.array(rows).reshape(-1, 6), table
+
+
+def extension_rows(case, function="channelProfile"):
+    """The case's table, or the rows measured now from its snapshots (None where it has neither: the
+    snapshots go once the table is written)."""
+    table = extension_window(case, function)[3]
+    if os.path.exists(table):
+        return np.loadtxt(table, comments="#", ndmin=2)
+    rows, _ = measure_extension(case, function)
+    return rows if len(rows) else None
+
+
+def write_extension(case, function):
+    """Measures the window's snapshots and writes the table whole (a temporary file, renamed); returns
+    what was written, in words. Exits where the snapshots hold no chains."""
+    rows, table = measure_extension(case, function)
+    if not len(rows):
+        sys.exit(f"chainExtension: no chains in the snapshots of {case} in the window of {function}")
+    os.makedirs(os.path.dirname(table), exist_ok=True)
+    np.savetxt(table + ".tmp", rows, fmt=["%.6g", "%d", "%.6g", "%.6g", "%.6g", "%.6g"], header=EXTENSION_COLUMNS)
+    os.replace(table + ".tmp", table)
+    return f"chainExtension: {len(np.unique(rows[:, 0]))} snapshots, {len(np.unique(rows[:, 1]))} chains: written {table}"

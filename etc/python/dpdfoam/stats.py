@@ -81,5 +81,9 @@ class BlockMean:
     def term(self):
         return (self.error, self.dof)
 
+    def allowance(self, z=Z_SIGMA):
+        """z standard errors read as the Student-t quantile of the same tail for the blocks' dof."""
+        return student_t(z, self.dof) * self.error
+
     def fmt(self, digits=4):
         return f"{self.value:.{digits}f} +- {self.error:.{digits}f}"

@@ -4,9 +4,10 @@
 Reads postProcessing/integratorSpeedAccuracy/speedAccuracy.dat (one row per integrator and step) and
 draws, one curve per integrator, |error| against the cost of one time unit for the kinetic
 temperature, the pressure and the viscosity (the last two against the reference run of the table's
-header: the reference integrator at a step smaller than any studied, so no run is its own reference), and the stability map (the step at which each integrator's kT error passes 1 % and
-5 %, by linear interpolation between the measured steps, and the first step at which the run's
-monitor stopped it). Writes results.dat and exits non-zero when a check fails.
+header: the reference integrator at a step smaller than any studied, so no run is its own reference),
+and the stability map (the step at which each integrator's kT error passes 1 % and 5 %, by linear
+interpolation between the measured steps, and the first step at which the run's monitor stopped it).
+Writes results.dat and exits non-zero when a check fails.
 
 results.dat also gives
   - the recommended step per integrator: the largest measured step below which the kT error stays
@@ -19,10 +20,10 @@ results.dat also gives
     particle per time unit.
 
 Cost is CPU time (all threads) per particle per time unit. A step costs the same whatever dt, so each
-integrator's cost per particle-step is taken as the median over its stable runs (CPU time per particle
-per time unit times dt), and its cost per time unit at dt as that median over dt: one run slowed by
-other jobs on the machine (CPU time still grows when they contend for caches and memory) then moves
-nothing. The per-run costs stay in the table; results.dat gives the medians and their spread.
+integrator's cost per time unit at dt is its median cost per particle-step over its stable runs, over
+dt: one run slowed by other jobs on the machine (CPU time still grows when they contend for caches and
+memory) then moves nothing. The per-run costs stay in the table; results.dat gives the medians and
+their spread.
 """
 import math
 import os
@@ -36,11 +37,16 @@ from dpdfoam.plots import label as label_axes, plt, save
 TABLE = "postProcessing/integratorSpeedAccuracy/speedAccuracy.dat"
 BASELINE = ("GrootWarren0.65", 0.02)  # the method and step the speed-up is measured against
 QUANTITIES = (("kT", "kT"), ("P", "pressure"), ("nu", "viscosity"))
-COLUMNS = ("dt kT kTse pressure pressureSe P Pse nu nuSe nuRel nuRelSe cost unstable after").split()
+# The table's columns after the integrator, as named here: the errors of kT, of the pressure (P) and of
+# the viscosity (nu), each relative, with its standard error (<name>se); nu and P against the reference.
+COLUMNS = "dt kT kTse pressure pressureSe P Pse viscosity viscositySe nu nuse cost unstable after".split()
+ERROR_LEVELS = ((0.01, "tab:green"), (0.05, "tab:orange"))  # 1 % and 5 %: the lines, the stability map's kT
+MARKERS = "osD^v<>"
 
 
 def read_rows(path):
-    """The rows by integrator, and the reference run: (label, dt, pressure, its SE, nu, its SE)."""
+    """The rows by integrator, each sorted by step, and the reference run: (label, dt, pressure, its SE,
+    nu, its SE)."""
     rows, reference = {}, None
     with open(path) as f:
         for line in f:
@@ -50,35 +56,26 @@ def read_rows(path):
             if line.startswith("#") or not line.strip():
                 continue
             fields = line.split()
-            values = dict(zip(COLUMNS, (float(x) for x in fields[1:])))
-            # Columns as named by the table: kT error, pressure error (P), viscosity error (nu).
-            p = dict(dt=values["dt"], cost=values["cost"], unstable=int(values["unstable"]) == 1,
-                     kT=values["kT"], kTse=values["kTse"], P=values["P"], Pse=values["Pse"],
-                     nu=values["nuRel"], nuse=values["nuRelSe"], pressure=values["pressure"],
-                     viscosity=values["nu"], viscositySe=values["nuSe"])
+            p = dict(zip(COLUMNS, (float(x) for x in fields[1:])))
+            p["unstable"] = int(p["unstable"]) == 1
             rows.setdefault(fields[0], []).append(p)
-    for label in rows:
-        rows[label].sort(key=lambda r: r["dt"])
+    for points in rows.values():
+        points.sort(key=lambda r: r["dt"])
     return rows, reference
 
 
-def step_costs(rows):
-    """Per integrator: (median, lowest, highest) CPU seconds per particle-step over its stable runs."""
+def apply_cost_model(rows):
+    """Per integrator: (median, lowest, highest) CPU seconds per particle-step over its stable runs; each
+    stable run's measured cost replaced by that median over dt."""
     costs = {}
     for label, points in rows.items():
         per_step = sorted(p["cost"] * p["dt"] for p in points if not p["unstable"] and not math.isnan(p["cost"]))
         if per_step:
             costs[label] = (float(np.median(per_step)), per_step[0], per_step[-1])
+            for p in points:
+                if not p["unstable"]:
+                    p["cost"] = costs[label][0] / p["dt"]
     return costs
-
-
-def apply_cost_model(rows, costs):
-    """Replaces each stable run's measured cost by its integrator's median step cost over dt."""
-    for label, points in rows.items():
-        for p in points:
-            p["measuredCost"] = p["cost"]
-            if label in costs and not p["unstable"]:
-                p["cost"] = costs[label][0] / p["dt"]
 
 
 def measured(p, q):
@@ -104,87 +101,76 @@ def crossing(points, level):
 
 
 def first_unstable(points):
-    for p in points:
-        if p["unstable"]:
-            return p["dt"]
-    return None
+    """The smallest step at which the run's monitor stopped the integrator; None when it never did."""
+    return next((p["dt"] for p in points if p["unstable"]), None)
 
 
-def recommended(points, level=0.01):
-    """The largest measured step with |kT error| <= level there and at every smaller step."""
+def largest_step(points, qualifies):
+    """The largest measured step up to which every step qualifies; None when the smallest does not."""
     best = None
     for p in points:
-        if p["unstable"] or abs(p["kT"]) > level:
+        if not qualifies(p):
             break
         best = p
     return best
 
 
 def as_accurate(p, base, quantities):
-    """Whether every error of p is within base's, within two combined standard errors."""
-    for q in quantities:
-        if not measured(p, q):
-            return False
-        if abs(p[q]) > abs(base[q]) + 2 * math.hypot(p[q + "se"], base[q + "se"]):
-            return False
-    return True
-
-
-def equal_accuracy_step(points, base, quantities):
-    best = None
-    for p in points:
-        if not as_accurate(p, base, quantities):
-            break
-        best = p
-    return best
+    """Whether every error of p is within base's, within two combined standard errors (only an error
+    above that bound disqualifies: a NaN standard error does not)."""
+    return all(measured(p, q) and not abs(p[q]) > abs(base[q]) + 2 * math.hypot(p[q + "se"], base[q + "se"])
+               for q in quantities)
 
 
 def reference_name(reference):
     """What the pressure and the viscosity errors are taken against."""
-    if not reference:
-        return "the reference run"
-    return "%s at dt %g (reference run)" % (reference[0], reference[1])
+    return "%s at dt %g (reference run)" % reference[:2] if reference else "the reference run"
+
+
+def draw_errors(ax, rows, q, name, against):
+    """|error| of quantity q against the cost, one curve per integrator, each point labelled with its dt."""
+    for k, (label, points) in enumerate(rows.items()):
+        ok = [p for p in points if measured(p, q)]
+        if not ok:
+            continue
+        cost = np.array([p["cost"] for p in ok])
+        err = np.array([max(abs(p[q]), 1e-5) for p in ok])
+        se = np.array([p[q + "se"] for p in ok])
+        ax.errorbar(cost, 100 * err, yerr=100 * se, marker=MARKERS[k % len(MARKERS)], label=label, capsize=2)
+        for p, c, e in zip(ok, cost, err):
+            ax.annotate("%g" % p["dt"], (c, 100 * e), fontsize=6, xytext=(3, 3), textcoords="offset points")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    for level, colour in ERROR_LEVELS:
+        ax.axhline(100 * level, color=colour, lw=0.8, ls="--")
+    label_axes(ax, None, "cost: CPU seconds per particle per time unit (median step cost / dt)",
+               "|%s error| (%%)  (labels: dt)" % name, legend=7)
+    ax.set_title("%s error against cost (against %s)" % (name, against), fontsize=10)
+
+
+def draw_stability_map(ax, rows):
+    """Per integrator: the measured stable steps, the interpolated kT error crossings, the blow-up."""
+    for k, (label, points) in enumerate(rows.items()):
+        stable_dt = [p["dt"] for p in points if not p["unstable"]]
+        ax.plot(stable_dt, [k] * len(stable_dt), "|", color="grey", markersize=12)
+        for level, colour in ERROR_LEVELS:
+            c = crossing(points, level)
+            if c and not c.startswith("<") and "-" not in c:  # interpolated, not a bound or a bracket
+                ax.plot(float(c), k, "o", color=colour)
+        u = first_unstable(points)
+        if u is not None:
+            ax.plot(u, k, "x", color="tab:red", markersize=10, mew=2)
+    ax.set_yticks(range(len(rows)))
+    ax.set_yticklabels(list(rows.keys()))
+    ax.set_xlabel("dt")
+    ax.set_title("stability map: | measured, o kT error 1 % (green) and 5 % (orange), x blow-up", fontsize=9)
 
 
 def plot(rows, reference):
     fig, axes = plt.subplots(2, 2, figsize=(13, 10))
-    panels = list(zip(axes.flat[:3], QUANTITIES))
-    markers = "osD^v<>"
-    for k, (label, points) in enumerate(rows.items()):
-        for ax, (q, name) in panels:
-            ok = [p for p in points if measured(p, q)]
-            if not ok:
-                continue
-            cost = np.array([p["cost"] for p in ok])
-            err = np.array([max(abs(p[q]), 1e-5) for p in ok])
-            se = np.array([p[q + "se"] for p in ok])
-            ax.errorbar(cost, 100 * err, yerr=100 * se, marker=markers[k % len(markers)], label=label, capsize=2)
-            for p, c, e in zip(ok, cost, err):
-                ax.annotate("%g" % p["dt"], (c, 100 * e), fontsize=6, xytext=(3, 3), textcoords="offset points")
-    for ax, (q, name) in panels:
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.axhline(1, color="tab:green", lw=0.8, ls="--")
-        ax.axhline(5, color="tab:orange", lw=0.8, ls="--")
-        label_axes(ax, None, "cost: CPU seconds per particle per time unit (median step cost / dt)",
-              "|%s error| (%%)  (labels: dt)" % name, legend=7)
-        against = "set kT" if q == "kT" else reference_name(reference)
-        ax.set_title("%s error against cost (against %s)" % (name, against), fontsize=10)
-    ax2 = axes.flat[3]
-    for k, (label, points) in enumerate(rows.items()):
-        stable_dt = [p["dt"] for p in points if not p["unstable"]]
-        ax2.plot(stable_dt, [k] * len(stable_dt), "|", color="grey", markersize=12)
-        for level, colour in ((0.01, "tab:green"), (0.05, "tab:orange")):
-            c = crossing(points, level)
-            if c and not c.startswith("<") and "-" not in c:
-                ax2.plot(float(c), k, "o", color=colour)
-        u = first_unstable(points)
-        if u is not None:
-            ax2.plot(u, k, "x", color="tab:red", markersize=10, mew=2)
-    ax2.set_yticks(range(len(rows)))
-    ax2.set_yticklabels(list(rows.keys()))
-    ax2.set_xlabel("dt")
-    ax2.set_title("stability map: | measured, o kT error 1 % (green) and 5 % (orange), x blow-up", fontsize=9)
+    for ax, (q, name) in zip(axes.flat[:3], QUANTITIES):
+        draw_errors(ax, rows, q, name, "set kT" if q == "kT" else reference_name(reference))
+    draw_stability_map(axes.flat[3], rows)
     save(fig, "speedAccuracy.png", dpi=120)
 
 
@@ -192,39 +178,45 @@ def fmt(x):
     return "-" if x is None else "%g" % x
 
 
-def results(rows, reference, costs):
+def cost_lines(costs, reference):
     lines = ["# Cost per particle-step (CPU seconds; median, lowest and highest over the stable runs; the",
              "# cost of one time unit at dt is the median over dt)",
              "# integrator median lowest highest"]
-    for label, (median, low, high) in costs.items():
-        lines.append("%-16s %-10.3g %-10.3g %.3g" % (label, median, low, high))
+    lines += ["%-16s %-10.3g %-10.3g %.3g" % (label, median, low, high) for label, (median, low, high) in costs.items()]
     if reference:
         lines += ["#", "# Reference run: %s at dt %g (smaller than every studied step): pressure %.4f +- %.4f, nu %.4f +- %.4f"
                   % reference]
-    lines += ["#", "# Stability map and recommended step (kT error; crossings interpolated between measured steps,",
+    return lines
+
+
+def stability_lines(rows):
+    lines = ["#", "# Stability map and recommended step (kT error; crossings interpolated between measured steps,",
              "# '-' when not reached; recommended: largest measured step with |kT error| <= 1 % up to it)",
              "# integrator dt1percent dt5percent dtBlowUp recommendedDt1percent"]
     for label, points in rows.items():
         c1, c5, u = crossing(points, 0.01), crossing(points, 0.05), first_unstable(points)
-        r = recommended(points)
+        r = largest_step(points, lambda p: not (p["unstable"] or abs(p["kT"]) > 0.01))  # the recommended step
         lines.append("%-16s %-10s %-10s %-8s %s" % (label, c1 or "-", c5 or "-", fmt(u), fmt(r and r["dt"])))
+    return lines
+
+
+def speed_up_lines(rows, reference):
     label, dt = BASELINE
     base = next((p for p in rows.get(label, []) if abs(p["dt"] - dt) < 1e-12), None)
     if base is None or base["unstable"]:
-        lines.append("# no speed-up: %s at dt %g was not measured (or not stable)" % BASELINE)
-        return lines, None
+        return ["# no speed-up: %s at dt %g was not measured (or not stable)" % BASELINE]
     quantities = [q for q, _ in QUANTITIES if measured(base, q)]
-    lines += ["#",
-              "# Equal accuracy against %s at dt %g (errors: kT %.3g +- %.3g, pressure %.3g +- %.3g, viscosity %.3g +- %.3g;"
-              % (label, dt, base["kT"], base["kTse"], base["P"], base["Pse"], base["nu"], base["nuse"]),
-              "# pressure and viscosity against %s): a step qualifies when each of its %s errors is at most" % (
-                  reference_name(reference), ", ".join(quantities)),
-              "# GW's + 2 combined SE; the equal-accuracy step is the largest one up to which every step qualifies.",
-              "# speedUp = cost(GW at %g) / cost(method at its equal-accuracy step)." % dt,
-              "# integrator equalAccuracyDt secondsPerParticleTimeUnit speedUp"]
+    lines = ["#",
+             "# Equal accuracy against %s at dt %g (errors: kT %.3g +- %.3g, pressure %.3g +- %.3g, viscosity %.3g +- %.3g;"
+             % (label, dt, base["kT"], base["kTse"], base["P"], base["Pse"], base["nu"], base["nuse"]),
+             "# pressure and viscosity against %s): a step qualifies when each of its %s errors is at most" % (
+                 reference_name(reference), ", ".join(quantities)),
+             "# GW's + 2 combined SE; the equal-accuracy step is the largest one up to which every step qualifies.",
+             "# speedUp = cost(GW at %g) / cost(method at its equal-accuracy step)." % dt,
+             "# integrator equalAccuracyDt secondsPerParticleTimeUnit speedUp"]
     best = None
     for name, points in rows.items():
-        p = equal_accuracy_step(points, base, quantities)
+        p = largest_step(points, lambda p: as_accurate(p, base, quantities))
         if p is None:
             lines.append("%-16s -" % name)
             continue
@@ -235,7 +227,7 @@ def results(rows, reference, costs):
     if best:
         lines.append("# best: %s at dt %g simulates one time unit %.2f times faster than %s at dt %g"
                      % (best[0], best[2], best[1], label, dt))
-    return lines, best
+    return lines
 
 
 # Standard-error budgets of the checked runs (the smallest studied step of each Verlet-type scheme) and
@@ -278,12 +270,10 @@ def checks(rows, reference, test_mode):
 
 def main():
     rows, reference = read_rows(TABLE)
-    costs = step_costs(rows)
-    apply_cost_model(rows, costs)
+    costs = apply_cost_model(rows)
     plot(rows, reference)
-    lines, _ = results(rows, reference, costs)
-    text = "\n".join(lines) + "\n"
-    with open("results.dat.tmp", "w") as f:
+    text = "\n".join(cost_lines(costs, reference) + stability_lines(rows) + speed_up_lines(rows, reference)) + "\n"
+    with open("results.dat.tmp", "w") as f:  # replaced whole: a reader never sees half a table
         f.write(text)
     os.replace("results.dat.tmp", "results.dat")
     print(text, end="")

@@ -14,32 +14,30 @@ from sweepPlaneNearRow/, written to resultsPlaneNearRow.dat and slipGammaFwPlane
 same monotonic checks and the published comparison (full size), the published scene's runs drawn
 beside it when they exist.
 """
-import math
 import os
 import sys
 
 import numpy as np
 
-from dpdfoam.channel import walls_mean_slip
-from dpdfoam.checks import Checks, as_number, write_results
+from dpdfoam.checks import Checks, write_results
 from dpdfoam.io import latest_profile, read_sweep, wall_planes
 from dpdfoam.plots import label, mark_walls, plt, save
-from dpdfoam.published import compare_with_published, published_checks, read_published
+from dpdfoam.published import published_checks, read_published
+from dpdfoam.sweep import (accounted_by, central_density, draw_profiles, published_comparison, published_lines,
+                           slip_falls_checks, sweep_slip, wall_distance)
 
 TEST_MODE = "-test" in sys.argv[1:]
 PLANE_NEAR_ROW = "-planeNearRow" in sys.argv[1:]
 GAMMA = "pairCoeffs/fluid-wall/gamma"
 VARIANT_NAMES = ["a_wf = 3 a", "wall 3 x denser"]
-# The published comparison (issue 25), on the 2-D runs (the published scene): each point within
-# max(0.3 r_c, 30 %) of the published slip length, decided only when the mean of the walls is known to
-# a third of that point's tolerance. The paper states no errors: differences are given in units of
-# this run's error alone. The test channel (d = 10) is not the published scene: there the table is
-# information.
-PUBLISHED_ABSOLUTE, PUBLISHED_RELATIVE = 0.3, 0.30
-# The slip's rise with falling gamma_fw (issue 45): each step's and the whole range's standard error
-# (the two slips' errors in quadrature) first within its budget, then the step above -3 budgets (no
-# reversal) and the rise above +3 budgets (decisive); bounds fixed by the budgets, not by the run's
-# errors. Budgets (step, rise), full size from the README's runs of 2026-11-24/27, test from 2026-11-28:
+TEST_NOTE = " (information: the test channel, d = 10, is not the published scene)"
+# The published comparison (issue 25's bound, dpdfoam.sweep) on the 2-D runs (the published scene); the
+# test channel (d = 10) is not the published scene: there the table is information.
+# The slip's rise with falling gamma_fw (issue 45, sweep.slip_falls_checks): each step's and the whole
+# range's standard error (the two slips' errors in quadrature) first within its budget, then the step
+# above -3 budgets (no reversal) and the rise above +3 budgets (decisive); bounds fixed by the budgets,
+# not by the run's errors; in 3-D the slip at gamma_fw 1 and 2 is the same within 0.004. Budgets (step,
+# rise), full size from the README's runs of 2026-11-24/27, test from 2026-11-28:
 MONOTONIC_BUDGETS = {
     # full: b's errors 0.013, 0.023, 0.013, 0.011: steps 0.026, 0.026, 0.017, rise 0.017; test (2026-11-28): steps 0.059, 0.038, rise 0.055
     "2-D": {"full": (0.035, 0.025), "test": (0.08, 0.07)},
@@ -50,76 +48,35 @@ MONOTONIC_BUDGETS = {
 }
 
 
-def profile(sweep_dir, case):
-    return latest_profile(f"{sweep_dir}/{case}")
-
-
-def sweep_slip(path):
-    """runSweep's table, its gamma_fw and the slip length of the mean of the walls with its error."""
-    s = read_sweep(path)
-    return (s, s[GAMMA]) + walls_mean_slip(s)
-
-
-def monotonic_checks(checks, label, gammas, b, err, step_budget, rise_budget):
-    """Slip grows as gamma_fw falls. No step down in gamma_fw may lower the slip length by more than 3
-    step budgets (a real reversal); over the whole range the rise must exceed 3 rise budgets (decisive);
-    each first with its standard error below its budget. Neighbouring steps may differ by less than
-    their errors (in 3-D the slip at gamma_fw 1 and 2 is the same within 0.004): their sign alone is
-    not a check."""
-    gammas, b, err = (np.array([as_number(v) for v in x], dtype=float) for x in (gammas, b, err))
-    if len(gammas) < 2 or len(b) != len(gammas) or len(err) != len(gammas):
-        checks.fail(f"{label}: slip length against gamma_fw: {len(gammas)} gamma_fw, {len(b)} slip lengths, {len(err)} "
-                    "errors (two runs at least, each with its slip and error)")
-        return
-    order = np.argsort(gammas)
-    for lo, hi in zip(order[:-1], order[1:]):
-        step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
-        checks.bounded(f"{label}: slip length not smaller at gamma_fw {gammas[lo]:g} than at {gammas[hi]:g} by more than "
-                       f"3 x {step_budget:g} (standard error below {step_budget:g})", step, se, step_budget,
-                       lower=-3 * step_budget)
-    lo, hi = order[0], order[-1]
-    rise, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
-    checks.bounded(f"{label}: slip length larger at gamma_fw {gammas[lo]:g} than at {gammas[hi]:g} by more than "
-                   f"3 x {rise_budget:g} (standard error below {rise_budget:g})", rise, se, rise_budget,
-                   lower=3 * rise_budget)
-
-
 def monotonic(checks, label, gammas, b, err):
-    """monotonic_checks with this mode's budgets for `label`."""
-    monotonic_checks(checks, label, gammas, b, err, *MONOTONIC_BUDGETS[label]["test" if TEST_MODE else "full"])
+    """The slip's rise with falling gamma_fw, with this mode's budgets for `label`."""
+    slip_falls_checks(checks, label, "gamma_fw", gammas, b, err, *MONOTONIC_BUDGETS[label]["test" if TEST_MODE else "full"])
 
 
 def wall_gap(prof, walls, cutoff=1.0):
     """The depletion at the walls: the fluid missing within one cutoff of a wall, as a width,
     integral of max(0, 1 - rho / rho_centre) dz over the bins there, mean of the two walls."""
-    z, rho = prof["z"], prof["density"]
-    centre = np.abs(z - 0.5 * (walls[0] + walls[1])) < 0.25 * (walls[1] - walls[0])
-    missing = np.clip(1.0 - rho / np.mean(rho[centre]), 0.0, None) * (z[1] - z[0])
-    return 0.5 * np.sum(missing[np.minimum(z - walls[0], walls[1] - z) < cutoff])
+    z = prof["z"]
+    missing = np.clip(1.0 - prof["density"] / central_density(prof, walls), 0.0, None) * (z[1] - z[0])
+    return 0.5 * np.sum(missing[wall_distance(z, walls) < cutoff])
 
 
-def published_comparison(published, gammas, b, err):
-    return compare_with_published(published["tables"]["Table 1"], "gamma_fw", gammas, b, err,
-                                  absolute=PUBLISHED_ABSOLUTE, relative=PUBLISHED_RELATIVE)
+def slip_comparison(published, gammas, b, err):
+    return published_comparison(published["tables"]["Table 1"], "gamma_fw", gammas, b, err)
 
 
 def accounted_by_plane_depth(published):
     """The published scene's differences from the paper are held to the ingredient that accounts for
     them (tutorials/channel/slipSensitivity): the variant with the rows nearer the bounce-back plane,
     when it ran."""
-    ingredient = "where the bounce-back plane sits (the variant with the rows 0.14 and 0.717 behind it)"
-    how = "./Allrun runs it after the published sweeps; ./Allrun -planeNearRow alone"
-    if not os.path.exists("sweepPlaneNearRow/sweep.dat"):
-        return ingredient, [], how
-    return ingredient, published_comparison(published, *sweep_slip("sweepPlaneNearRow/sweep.dat")[1:]), how
+    return accounted_by("where the bounce-back plane sits (the variant with the rows 0.14 and 0.717 behind it)",
+                        "./Allrun runs it after the published sweeps; ./Allrun -planeNearRow alone",
+                        "sweepPlaneNearRow/sweep.dat", GAMMA, lambda *slip: slip_comparison(published, *slip))
 
 
 def comparison_lines(published, comparison):
-    return [f"# published: {published['source']}, Table 1 (no errors stated: differences in units of this run's "
-            f"error){' (information: the test channel, d = 10, is not the published scene)' if TEST_MODE else ''}",
-            "# gamma_fw  2-D slipLength (mean of walls) +- err   published   difference  (standard errors)"] + [
-        f"published {g:5g}  {b:+.4f} +- {e:.4f}   {p:.4f}   {b - p:+.4f}  ({(b - p) / e:+.1f})"
-        for g, b, e, p, _, _ in comparison]
+    return published_lines(published, comparison, ["# gamma_fw  2-D slipLength (mean of walls) +- err   published   "
+                                                    "difference  (standard errors)"], TEST_NOTE if TEST_MODE else "")
 
 
 def sweep_lines(name, s, g, b, e, extra=lambda k: ""):
@@ -131,19 +88,16 @@ def draw_published_slip(ax, published):
     table = published["tables"]["Table 1"]
     ax.plot(table["gamma_fw"], table["slipLength"], "rD", label="published (2-D, Table 1)")
     ax.set_xscale("log")
-    label(ax, "slip length against gamma_fw", "gamma_fw", "slip length (mean of the walls)")
+    label(ax, "slip length against gamma_fw", "gamma_fw", "slip length (mean of the walls)", legend=8)
 
 
-def draw_profiles(ax, sweep_dir, cases, gammas):
-    colours = plt.cm.viridis(np.linspace(0, 0.9, len(gammas)))
-    for k, c in enumerate(cases):
-        p = profile(sweep_dir, c)
-        ax.errorbar(p["z"], p["ux"], yerr=p["uxErr"], fmt="o", ms=2, color=colours[k], label=f"gamma_fw {gammas[k]:g}")
+def draw_velocities(ax, sweep_dir, sweep, gammas):
+    draw_profiles(ax, [latest_profile(f"{sweep_dir}/{c}") for c in sweep["case"]], [f"gamma_fw {g:g}" for g in gammas])
 
 
 def main():
-    s2, g2, b2, e2 = sweep_slip("sweep2D/sweep.dat")
-    s3, g3, b3, e3 = sweep_slip("threeD/sweep3D/sweep.dat")
+    s2, g2, b2, e2 = sweep_slip("sweep2D/sweep.dat", GAMMA)
+    s3, g3, b3, e3 = sweep_slip("threeD/sweep3D/sweep.dat", GAMMA)
     sv = read_sweep("variants/sweep.dat")
     walls = wall_planes()
     # The same checks in both modes and both dimensions. The errors come from the fit block by block
@@ -156,14 +110,14 @@ def main():
     # The variants leave a gap at the wall: more fluid missing next to it than at the standard wall
     # (same gamma_fw, 4.5). A bin's density is known to ~1 %, so the depletion to ~0.005: a
     # difference of 0.1 (a tenth of a cutoff of fluid) is decisive.
-    k45 = int(np.argmin(np.abs(g2 - 4.5)))
-    gap_std = wall_gap(profile("sweep2D", s2["case"][k45]), walls)
-    gaps = [wall_gap(profile("variants", c), walls) for c in sv["case"]]
+    standard = latest_profile(f"sweep2D/{s2['case'][int(np.argmin(np.abs(g2 - 4.5)))]}")
+    variants = [latest_profile(f"variants/{c}") for c in sv["case"]]
+    gap_std, gaps = wall_gap(standard, walls), [wall_gap(p, walls) for p in variants]
     for name, gap in zip(VARIANT_NAMES, gaps):
         checks.add(f"{name}: a wider gap at the wall than the standard wall's (depletion + 0.1)", gap > gap_std + 0.1,
                    f"{gap:.3f} against {gap_std:.3f}")
     published = read_published("published.dat")
-    comparison = published_comparison(published, g2, b2, e2)
+    comparison = slip_comparison(published, g2, b2, e2)
     if not TEST_MODE:
         checks.extend(published_checks(comparison, "2-D slip length", "gamma_fw {:g}", accounted_by_plane_depth(published)))
 
@@ -184,17 +138,13 @@ def main():
     ax[1].errorbar(g2, s2["nu"], yerr=s2["nuError"], fmt="o-", label="2-D")
     ax[1].errorbar(g3, s3["nu"], yerr=s3["nuError"], fmt="s--", label="3-D")
     ax[1].set_xscale("log")
-    label(ax[1], "fitted viscosity", "gamma_fw", "nu (parabola fit)")
-    draw_profiles(ax[2], "sweep2D", s2["case"], g2)
-    label(ax[2], "2-D velocity profiles", "z", "u_x")
-    p = profile("sweep2D", s2["case"][k45])
-    ax[3].plot(p["z"], p["density"], "k-", label="standard wall (a_wf = a)")
-    for name, c in zip(VARIANT_NAMES, sv["case"]):
-        p = profile("variants", c)
+    label(ax[1], "fitted viscosity", "gamma_fw", "nu (parabola fit)", legend=8)
+    draw_velocities(ax[2], "sweep2D", s2, g2)
+    label(ax[2], "2-D velocity profiles", "z", "u_x", legend=8)
+    ax[3].plot(standard["z"], standard["density"], "k-", label="standard wall (a_wf = a)")
+    for name, p in zip(VARIANT_NAMES, variants):
         ax[3].plot(p["z"], p["density"], "-", label=name)
-    label(ax[3], "2-D density, gamma_fw 4.5: the gap at the wall", "z", "density")
-    for a in ax:
-        a.legend(fontsize=8)
+    label(ax[3], "2-D density, gamma_fw 4.5: the gap at the wall", "z", "density", legend=8)
     mark_walls(ax[2:], walls)
     fig.suptitle("Slip by the wall's dissipative coupling gamma_fw (Poiseuille, rho 3, a 25)")
     save(fig, "slipGammaFw.png", dpi=100)
@@ -204,10 +154,10 @@ def main():
 
 def main_plane_near_row():
     """The named variant: its sweep against the paper, with the published wall's runs beside it."""
-    sv, gv, bv, ev = sweep_slip("sweepPlaneNearRow/sweep.dat")
+    sv, gv, bv, ev = sweep_slip("sweepPlaneNearRow/sweep.dat", GAMMA)
     walls = wall_planes()
     published = read_published("published.dat")
-    comparison = published_comparison(published, gv, bv, ev)
+    comparison = slip_comparison(published, gv, bv, ev)
     checks = Checks()
     monotonic(checks, "2-D, plane near the row", gv, bv, ev)
     if not TEST_MODE:
@@ -222,14 +172,12 @@ def main_plane_near_row():
     fig, ax = plt.subplots(1, 2, figsize=(12, 4.5))
     ax[0].errorbar(gv, bv, yerr=ev, fmt="o-", label="rows 0.14 / 0.717 behind the plane (variant)")
     if os.path.exists("sweep2D/sweep.dat"):
-        _, g2, b2, e2 = sweep_slip("sweep2D/sweep.dat")
+        _, g2, b2, e2 = sweep_slip("sweep2D/sweep.dat", GAMMA)
         ax[0].errorbar(g2, b2, yerr=e2, fmt="s--", label="rows 0.289 / 0.866 (published wall)")
     draw_published_slip(ax[0], published)
-    draw_profiles(ax[1], "sweepPlaneNearRow", sv["case"], gv)
+    draw_velocities(ax[1], "sweepPlaneNearRow", sv, gv)
     mark_walls(ax[1], walls)
-    label(ax[1], "velocity profiles (variant)", "z", "u_x")
-    for a in ax:
-        a.legend(fontsize=8)
+    label(ax[1], "velocity profiles (variant)", "z", "u_x", legend=8)
     fig.suptitle("Slip by gamma_fw with the wall's rows nearer the bounce-back plane (named variant)")
     save(fig, "slipGammaFwPlaneNearRow.png", dpi=100)
     print("Written slipGammaFwPlaneNearRow.png and resultsPlaneNearRow.dat")

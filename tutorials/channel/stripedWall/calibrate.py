@@ -4,13 +4,14 @@
 Reads hydrodynamicWall's fit of the uniform-wall sweep (calibration/hydrodynamicWall.dat: the wall's
 position, shared by every gamma_L, and each gamma_L's slip length b from it, with errors) and the
 sweep's gamma_L (calibration/sweepPoiseuille/sweep.dat). Picks the gas sectors' gamma_L (b = the
-target, -slip; and the other targets of -slips b1,b2,...) by interpolating b linearly in 1/gamma_L between the two sweep points that bracket it
-(the tunable-slip wall's b is nearly linear in 1/gamma_L: b/zc ~ 2/alpha - 7/15, docs/walls.md 3.5),
-with the interpolated error; and the no-slip gamma_L the same way at b = 0 or, where the friction
-saturates before b reaches 0, the stiffest gamma_L with the slip it leaves. Writes
-calibration/gammaL.dat (a dictionary the Allrun and plotResults.py read) and calibration.png; exits
-non-zero when either is not found or b rises with gamma_L.
+target, -slip; and the other targets of -slips b1,b2,...) by interpolating b linearly in 1/gamma_L
+between the two sweep points that bracket it (dpdfoam.slip.friction_for_slip), with the interpolated
+error; and the no-slip gamma_L the same way at b = 0 or, where the friction saturates before b reaches
+0, the stiffest gamma_L with the slip it leaves. Writes calibration/gammaL.dat (a dictionary the Allrun
+and plotResults.py read) and calibration.png; exits non-zero when either is not found or b rises with
+gamma_L.
 """
+import argparse
 import math
 import sys
 
@@ -19,6 +20,7 @@ import numpy as np
 from dpdfoam.checks import Checks, print_file
 from dpdfoam.io import read_dict, read_sweep
 from dpdfoam.plots import label, plt, save
+from dpdfoam.slip import friction_for_slip
 
 
 # The slip length's standard error grows with b (b = u_slip / shear rate): full size 0.10-0.15 where b is
@@ -33,26 +35,14 @@ def slip_budget(b, test):
     return B_SHARE * abs(b) + B_FLOOR[test]
 
 
-def option(name, default):
-    args = sys.argv[1:]
-    return float(args[args.index(name) + 1]) if name in args else default
-
-
-def list_option(name):
-    """-name 2.5,5,15: a comma-separated list of numbers (empty when not given)."""
-    args = sys.argv[1:]
-    return [float(v) for v in args[args.index(name) + 1].split(",")] if name in args else []
-
-
-def gamma_for(target, gammas, b, err):
-    """gamma_L with slip length `target`, linear in 1/gamma_L between the bracketing sweep points, and the
-    slip length's error there (interpolated). None when no neighbouring pair brackets it."""
-    order = np.argsort(gammas)
-    for lo, hi in zip(order[:-1], order[1:]):
-        if (b[lo] - target) * (b[hi] - target) <= 0.0:
-            w = (target - b[lo]) / (b[hi] - b[lo])
-            return 1.0 / ((1 - w) / gammas[lo] + w / gammas[hi]), (1 - w) * err[lo] + w * err[hi]
-    return None
+def arguments():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("-period", type=float, default=10.0, help="the stripes' period L")
+    parser.add_argument("-slip", type=float, default=10.0, help="the gas sectors' local slip length")
+    parser.add_argument("-slips", type=lambda text: [float(v) for v in text.split(",")], default=[],
+                        help="the other local slip lengths the study sweeps: b1,b2,...")
+    parser.add_argument("-test", action="store_true")
+    return parser.parse_known_args()[0]  # (the Allrun's other options, -noFluidBehind, are not this script's)
 
 
 def write_calibration(hw, period, slip_target, picks, others):
@@ -73,32 +63,32 @@ def write_calibration(hw, period, slip_target, picks, others):
 
 
 def main():
-    period, slip_target = option("-period", 10.0), option("-slip", 10.0)
+    args = arguments()
+    period, slip_target, test = args.period, args.slip, args.test
     hw = {k: np.asarray(v) if isinstance(v, list) else v for k, v in read_dict("calibration/hydrodynamicWall.dat").items()}
     gammas = np.asarray(read_sweep("calibration/sweepPoiseuille/sweep.dat")["walls/lower/tunableSlip/gammaL"], dtype=float)
     b, err = hw["slipLength"], hw["slipLengthError"]
     span = f"b from {b.min():.3f} to {b.max():.3f}"
     checks = Checks()
     order = np.argsort(gammas)
-    test = "-test" in sys.argv[1:]
     for lo, hi in zip(order[:-1], order[1:]):
         step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
         budget = math.hypot(slip_budget(b[lo], test), slip_budget(b[hi], test))
         checks.bounded(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g} (standard "
                        f"error below {budget:.3g})", step, se, budget, -3 * budget, None)
     picks = {}
-    found = gamma_for(slip_target, gammas, b, err)
+    found = friction_for_slip(slip_target, gammas, b, err)
     checks.add(f"the sweep brackets b = {slip_target:g} (gammaGas)", found is not None, span)
     if found:
         picks["gammaGas"] = (found[0], slip_target, found[1])
     # The other local slip lengths the study sweeps (-slips): their gas gamma_L as lists.
-    others = [(b_other, gamma_for(b_other, gammas, b, err)) for b_other in list_option("-slips")]
+    others = [(b_other, friction_for_slip(b_other, gammas, b, err)) for b_other in args.slips]
     for b_other, found_other in others:
         checks.add(f"the sweep brackets b = {b_other:g} (gammaGasOf)", found_other is not None, span)
     # No slip: where b crosses 0, or, where the friction saturates first (the stiffest step of the sweep
     # no longer lowers b decisively), the stiffest gamma_L with the slip it leaves, b0 (plotResults.py
     # holds the stripes to the reference with that residual slip).
-    found = gamma_for(0.0, gammas, b, err)
+    found = friction_for_slip(0.0, gammas, b, err)
     stiff, before = order[-1], order[-2]
     if found:
         picks["gammaNoSlip"] = (found[0], 0.0, found[1])

@@ -1,58 +1,43 @@
 #!/usr/bin/env python3
 """Polymer channel tutorial (docs/scenes.md scene 7; Zhou, Liu and Chang): picture, results table and checks.
 
-Reads every case of the sweep (sweep/, or the variant's: sweepLowG/, sweepLatticeWall/,
-sweepLatticeWallLowG/, runSweep's copies of the case and its sweep.dat) and computes per case the
-papers' quantities, all with errors over super-blocks: the flux, the centre velocity and the velocity
-deficit against the case without chains; the profile's asymmetry u(z) - u(-z) with its noise; the
-fitted (effective) viscosity; kT in the bulk as the bins read it and as the heat (pair kT, from the
-snapshots: etc/pairTemperature.py); the density of the fluid and of the beads across the channel, the
-beads' depletion at the walls and their share within |z| <= 10 (two thirds of the half-height); the
-chains' shapes, and their extension along the flow by where they lie, the outer chains against the
-central ones (chainExtension.py). Where the case samples the paper's grid (200 x 20 bins in the z-x
-plane over the last 400 time units: paperField, paperFluid, paperBeads) the same profiles are read
-there too, as the paper reads them. Draws polymerChannel<variant>.png (with the chains at t = 0 and at
-the end), writes results<variant>.dat and exits non-zero when a check fails.
+Reads every case of the sweep (sweep<variant>/: runSweep's copies of the case and its sweep.dat) and
+writes the papers' quantities per case with errors over super-blocks (README: what each is) into
+results<variant>.dat, draws polymerChannel<variant>.png (with the chains at t = 0 and at the end, and
+the beads on the paper's grid), and exits non-zero when a check fails.
 
-Error bars. The run samples in blocks of 25 time units (test: 10), shorter than the correlation times
-of the flow and of the chains: the slowest flow mode decays in tau1 = d^2 / (pi^2 nu) (340 at the
-default's d = 30, 290 at the lattice-wall variant's d = 28, 24 at the test's d = 8; its share dominates
-the flux's fluctuation without chains), and the flux and the chain shapes of the 90-bead chains
-decorrelate within ~300 (measured at d = 28: their autocorrelation crosses zero at 250-300, and the
-standard error over blocks stops growing with the block length from ~300). Consecutive sampling
-blocks are therefore joined into super-blocks of about 2 tau1 (600; test 50: the superBlocks entry of
-the case's fitSlipLengthDict, whose fit.dat says how the blocks were joined), and every mean's
-standard error is the spread of its M super-block means over sqrt(M) (M = 5 in the default's 3000
-sampled time units, 8 in the lattice-wall variant's 4800 and in the test). For an exponentially
-correlated signal, neighbouring means of blocks 2 tau1 long are still correlated by ~0.3, which leaves
-the slowest mode's share of the error ~15 % low (wallComparison.py of
-tutorials/channel/poiseuille/latticeWall). Each error comes from M - 1 degrees of freedom, so "3
-standard errors" is read as the Student-t quantile of the same one-sided tail probability (0.135 %)
-for the Welch-Satterthwaite degrees of freedom of the combination.
+Error bars. The sampling blocks (25 time units; test 10) are shorter than the correlation times: the
+slowest flow mode decays in tau1 = d^2 / (pi^2 nu) (340 at d = 30, 290 at the lattice wall's d = 28,
+24 at the test's d = 8), the flux and the 90-bead chains' shapes within ~300 (measured at d = 28:
+their autocorrelation crosses zero at 250-300). Every mean's standard error is therefore the spread
+of its M super-block means over sqrt(M), each super-block ~2 tau1 (600, test 50: fitSlipLength's
+superBlocks, as its fit.dat says; M = 5 at full size, 8 in the lattice-wall variant and the test).
+Neighbouring super-blocks are still correlated by ~0.3, which leaves the slowest mode's share of the
+error ~15 % low (wallComparison.py of tutorials/channel/poiseuille/latticeWall). "3 standard errors"
+is the Student-t quantile of the same one-sided tail (0.135 %) for the Welch-Satterthwaite degrees of
+freedom of the combination.
 
 Bounds. A check that a difference is absent (the chains' heat, the chain-free profile's asymmetry)
-allows 3 standard errors only within a fixed budget: the allowance must itself lie within it, so that
-a noisier run fails instead of passing more easily. A check that an effect is present (the deficit's
-steps, the depletion, the outer chains' extension) needs it above 3 standard errors, which noise only
-makes harder.
+allows 3 standard errors only within a fixed budget, so that a noisier run fails instead of passing
+more easily. A check that an effect is present (the deficit's steps, the depletion, the outer chains'
+extension) needs it above 3 standard errors, which noise only makes harder.
 """
 import math
 import os
 import re
 import sys
-import warnings
 
 import numpy as np
 
-from dpdfoam.blocks import SampledBins, temperature
+from dpdfoam.blocks import SampledBins, band_share, mirror_asymmetry, region_mean, region_temperature
 from dpdfoam.checks import Checks, write_results
-from dpdfoam.io import dictionary_value, latest_dir, log_values, read_dict, read_sweep, read_table, read_text, run_finished
+from dpdfoam.grid import averaged_along, image, weighted_mean
+from dpdfoam.io import dictionary_value, latest_dir, read_columns, read_dict, read_sweep, read_table, read_text, run_finished
 from dpdfoam.pair_temperature import case_rows
 from dpdfoam.plots import label, mark_walls, plt, save
-from dpdfoam.snapshots import snapshot_box, unwrapped_chains
-from dpdfoam.stats import Z_SIGMA, BlockMean as Stat, combined, count_weighted_mean, student_t
-
-import chainExtension  # beside this script
+from dpdfoam.snapshots import chains_in_box, extension_rows
+from dpdfoam.stats import BlockMean as Stat, combined
+from dpdfoam.timeseries import binned_block_means, block_index, block_means, log_series, nan_block_mean, rows_in_blocks
 
 # The fluid (constant/dpdProperties): kT, a, rho, and Groot and Warren's equation of state
 # p = rho kT + alpha a rho^2 (alpha = 0.101), whose isothermal sound speed is c^2 = dp/drho = kT + 2 alpha a rho.
@@ -72,29 +57,6 @@ HEAT_BUDGET = {False: 0.01, True: 0.03}          # of kT_set; key: test
 SYMMETRY_BUDGET = {False: 0.01, True: 0.05}      # of U; key: test or low g
 
 
-def overlap(z, width, lo, hi):
-    """The share of each bin (centres z, width) that lies in [lo, hi]."""
-    return np.clip((np.minimum(z + 0.5 * width, hi) - np.maximum(z - 0.5 * width, lo)) / width, 0.0, 1.0)
-
-
-def bulk_kT(sums, bulk):
-    """kT of the bulk bins per super-block, weighted by their particle-samples."""
-    return Stat(count_weighted_mean(temperature(sums)[:, bulk], sums[:, bulk, 0]))
-
-
-def paper_grid(path):
-    """A table of the paper's 2-D grid (profileBins: columns z x density ... count) averaged over x, per z
-    bin: the density (mean over the x columns), ux and kT (weighted by the particle-samples), the count."""
-    t = read_table(path)
-    zs = np.unique(t["z"])
-    rows = [t["z"] == z for z in zs]
-    count = np.array([t["count"][r].sum() for r in rows])
-    with np.errstate(invalid="ignore", divide="ignore"):
-        weighted = lambda name: np.array([np.nansum(t[name][r] * t["count"][r]) for r in rows]) / count  # noqa: E731
-        return {"z": zs, "count": count, "density": np.array([t["density"][r].mean() for r in rows]),
-                "ux": weighted("ux"), "kT": weighted("kT"), "nx": len(np.unique(t["x"]))}
-
-
 class Case:
     """One case of the sweep: its profiles, fit, chains and log, with super-block statistics."""
 
@@ -111,131 +73,96 @@ class Case:
         self.walls, self.g = tuple(self.fit["wallPosition"]), self.fit["g"]
         self.d, self.centre = self.walls[1] - self.walls[0], 0.5 * (self.walls[0] + self.walls[1])
         self.h = 0.5 * self.d
-        pp = latest_dir(os.path.join(path, "postProcessing/profileBins/*"))
-        self.table = read_table(os.path.join(pp, "channelProfile.dat"))
-        self.bead_table = read_table(os.path.join(pp, "beadProfile.dat")) if self.chains else None
-        self.fluid_table = read_table(os.path.join(pp, "fluidProfile.dat"))
-        time_dir = latest_dir(os.path.join(path, "[0-9]*"))
-        self.snapshot = os.path.join(time_dir, "particles.h5")
-        self.snapshot0 = os.path.join(path, "0", "particles.h5")
-        self.prof = SampledBins(os.path.join(time_dir, "sampling/channelProfile.h5"))
-        # fitSlipLength's super-blocks (its jackknife gives nu's error); every other mean uses the same.
-        self.per, self.m = int(self.fit["blocksPerSuperBlock"]), int(self.fit["superBlocks"])
-        self.super_time = float(self.fit["superBlockLength"])
-        # The super-blocks cover [window_start, end): the earliest sampling blocks left out, if any.
+        # fitSlipLength's super-blocks (its jackknife gives nu's error); every other mean uses the same,
+        # over [window_start, end): the earliest sampling blocks left out, if any.
+        self.per, self.m, self.super_time = int(self.fit["blocksPerSuperBlock"]), int(self.fit["superBlocks"]), float(self.fit["superBlockLength"])
         self.window_start = self.end - self.m * self.super_time
-        self._flow()
+        pp = latest_dir(os.path.join(path, "postProcessing/profileBins/*"))
+        self.table, self.fluid_table = (read_table(os.path.join(pp, f"{n}Profile.dat")) for n in ("channel", "fluid"))
+        self.bead_table = read_table(os.path.join(pp, "beadProfile.dat")) if self.chains else None
+        time_dir = latest_dir(os.path.join(path, "[0-9]*"))
+        self.snapshot, self.snapshot0 = os.path.join(time_dir, "particles.h5"), os.path.join(path, "0", "particles.h5")
+        sampled = lambda name: SampledBins(os.path.join(time_dir, f"sampling/{name}.h5"))  # noqa: E731
+        self._flow(sampled("channelProfile"))
         self._heat()
-        fluid = SampledBins(os.path.join(time_dir, "sampling/fluidProfile.h5"))
-        fluid_sums, fluid_samples = fluid.super_blocks(self.per, self.m)
-        self.kT_fluid = bulk_kT(fluid_sums, self.bulk)
-        rho_fluid = fluid.density(fluid_sums, fluid_samples)
-        self.fluid_bulk, self.fluid_near = Stat(rho_fluid[:, self.bulk].mean(axis=1)), Stat(rho_fluid[:, self.near].mean(axis=1))
+        _, fluid_bulk, fluid_near, self.kT_fluid = self._regions(sampled("fluidProfile"))
+        self.fluid_bulk, self.fluid_near = Stat(fluid_bulk), Stat(fluid_near)
         if self.chains:
-            self._beads(SampledBins(os.path.join(time_dir, "sampling/beadProfile.h5")))
+            self._beads(sampled("beadProfile"))
             self._chains(latest_dir(os.path.join(path, "postProcessing/chains/*")))
             self._extension()
         self._paper(control, pp)
         self._log()
 
-    def _flow(self):
-        sums, samples = self.prof.super_blocks(self.per, self.m)
-        z = self.prof.z
-        inside = (z > self.walls[0]) & (z < self.walls[1])
-        centre = np.abs(z - self.centre) < 1.0
-        self.bulk = np.abs(z - self.centre) < 0.25 * self.d  # the central half of the channel
-        self.near = (z - self.walls[0] < 1.0) | (self.walls[1] - z < 1.0)  # within one cutoff of a wall
-        count, sum_u = sums[..., 0], sums[..., 1]
-        # Mass-weighted mean velocity of all mobile particles (flux / (rho d)) and the centre velocity.
-        self.U = Stat(sum_u[:, inside].sum(axis=1) / count[:, inside].sum(axis=1))
-        self.uc = Stat(sum_u[:, centre].sum(axis=1) / count[:, centre].sum(axis=1))
-        self.kT = bulk_kT(sums, self.bulk)
-        self.kT_mean = count_weighted_mean(temperature(sums.sum(axis=0))[inside], count.sum(axis=0)[inside])
-        # nu: fitSlipLength's, with its error by jackknife over the super-blocks.
-        self.nu = Stat.of(self.fit["nu"], self.fit["nuError"], self.m - 1)
-        self.rho_bulk = float(np.mean(self.prof.density(sums.sum(axis=0), self.m * samples)[self.bulk]))
-        self._asymmetry(z, count, sum_u)
+    def bulk(self, z):
+        return np.abs(z - self.centre) < 0.25 * self.d  # the central half of the channel
 
-    def _asymmetry(self, z, count, sum_u):
-        """u(z) - u(-z) (about the centre) per mirrored pair of bins, with its error over the super-blocks;
-        the two halves' mean velocities apart (A = U(upper) - U(lower)); chi^2 of the pairs against zero."""
-        n = len(z)
-        upper = np.arange((n + 1) // 2, n)
-        lower = n - 1 - upper
-        if not np.allclose(z[upper] - self.centre, self.centre - z[lower]):
-            sys.exit(f"plotResults: {self.path}: channelProfile's bins are not symmetric about the channel's centre")
-        with np.errstate(invalid="ignore", divide="ignore"):
-            u = sum_u / count
-        du = u[:, upper] - u[:, lower]
-        mean, error = du.mean(axis=0), du.std(axis=0, ddof=1) / math.sqrt(self.m)
-        half = lambda k: sum_u[:, k].sum(axis=1) / count[:, k].sum(axis=1)  # noqa: E731
-        good = np.isfinite(mean) & (error > 0)
-        self.asym = {"z": z[upper] - self.centre, "du": mean, "err": error, "A": Stat(half(upper) - half(lower)),
-                     "chi2": float(np.mean((mean[good] / error[good]) ** 2)), "pairs": int(good.sum()),
-                     "rms": float(np.sqrt(np.mean(mean[good] ** 2))), "noise": float(np.sqrt(np.mean(error[good] ** 2))),
-                     "max": float(np.max(np.abs(mean[good])))}
+    def near(self, z):
+        return (z - self.walls[0] < 1.0) | (self.walls[1] - z < 1.0)  # within one cutoff of a wall
+
+    def _flow(self, prof):
+        sums, _ = prof.super_blocks(self.per, self.m)
+        z, count, sum_u = prof.z, sums[..., 0], sums[..., 1]
+        inside = (z > self.walls[0]) & (z < self.walls[1])
+        # Mass-weighted mean velocity of all mobile particles (flux / (rho d)) and the centre velocity.
+        self.U = Stat(region_mean(sum_u, count, inside))
+        self.uc = Stat(region_mean(sum_u, count, np.abs(z - self.centre) < 1.0))
+        self.kT = Stat(region_temperature(sums, self.bulk(z)))
+        self.kT_mean = region_temperature(sums.sum(axis=0), inside)
+        self.nu = Stat.of(self.fit["nu"], self.fit["nuError"], self.m - 1)  # fitSlipLength's jackknife error
+        self.asym = mirror_asymmetry(z, self.centre, count, sum_u)
 
     def _heat(self):
         """The bulk's kT split into heat (pair) and motion neighbours share (shared), per snapshot of the
-        sampled window (etc/pairTemperature.py: the case's table, or measured now from its snapshots),
-        as super-block means. The region is the central half of channelProfile's range (the walls)."""
-        rows = case_rows(self.path, "channelProfile")
-        rows = rows[rows[:, 0] >= self.window_start]
-        k = np.minimum(np.floor((rows[:, 0] - self.window_start) / self.super_time).astype(int), self.m - 1)
+        sampled window (etc/pairTemperature.py: the case's table, or measured now from its snapshots,
+        over the central half of channelProfile's range), as super-block means."""
+        rows, k = rows_in_blocks(case_rows(self.path, "channelProfile"), self.window_start, self.super_time, self.m)
         if np.bincount(k, minlength=self.m).min() < 2:
             sys.exit(f"plotResults: {self.path} has fewer than 2 snapshots in a super-block of {self.super_time:g} "
                      "(writeInterval of system/controlDict): rerun the case")
-        self.kT_single, self.kT_pair, self.kT_shared = (Stat([rows[k == j, col].mean() for j in range(self.m)]) for col in (1, 2, 3))
+        self.kT_single, self.kT_pair, self.kT_shared = (Stat(block_means(rows[:, col], k, self.m)) for col in (1, 2, 3))
         self.snapshots = len(rows)
 
-    def _beads(self, bins):
+    def _regions(self, bins):
+        """A profile's super-block sums, and per super-block its density in the bulk and within one
+        cutoff of a wall, and the bulk's kT."""
         sums, samples = bins.super_blocks(self.per, self.m)
         rho = bins.density(sums, samples)
-        near_rho, bulk_rho = rho[:, self.near].mean(axis=1), rho[:, self.bulk].mean(axis=1)
+        return (sums, rho[:, self.bulk(bins.z)].mean(axis=1), rho[:, self.near(bins.z)].mean(axis=1),
+                Stat(region_temperature(sums, self.bulk(bins.z))))
+
+    def _beads(self, bins):
+        sums, bulk_rho, near_rho, self.kT_beads = self._regions(bins)
         self.bead_bulk, self.bead_near = Stat(bulk_rho), Stat(near_rho)
         self.depletion = Stat(near_rho / bulk_rho, near_rho.mean() / bulk_rho.mean())
-        self.kT_beads = bulk_kT(sums, self.bulk)
-        self.bead_fraction_bulk = float(bulk_rho.mean() / self.rho_bulk)
-        # The beads' share within |z| <= 2 h / 3 (10 at h = 15), bins straddling the edge by their share,
-        # and in the upper half of the channel.
         count = sums[..., 0]
+        # The beads' share within |z| <= 2 h / 3 (10 at h = 15), and in the upper half of the channel.
         self.share_edge = SHARE_FRACTION * self.h
-        weight = overlap(bins.z, bins.width, self.centre - self.share_edge, self.centre + self.share_edge)
-        self.share = Stat((count * weight).sum(axis=1) / count.sum(axis=1))
+        self.share = Stat(band_share(count, bins.z, bins.width, self.centre - self.share_edge, self.centre + self.share_edge))
         self.upper_share = Stat(count[:, bins.z > self.centre].sum(axis=1) / count.sum(axis=1))
 
     def _chains(self, directory):
         data = np.loadtxt(os.path.join(directory, "chainStatistics.dat"), comments="#", ndmin=2)
-        k = np.floor((data[:, 0] - self.window_start) / self.super_time).astype(int)
-        use = (k >= 0) & (k < self.m)
-        self.Rg2, self.Ree2, self.Reex2, self.spanx = (Stat([data[use & (k == j), col].mean() for j in range(self.m)])
-                                                       for col in (1, 2, 4, 5))
+        k = block_index(data[:, 0], self.window_start, self.super_time, self.m, closed=False)
+        self.Rg2, self.Ree2, self.Reex2, self.spanx = (Stat(block_means(data[:, col], k, self.m)) for col in (1, 2, 4, 5))
         # R_g^2 and span by where the chain's centre lies across the channel (the whole sampling).
-        bins = np.loadtxt(os.path.join(directory, "chainBins.dat"), comments="#", ndmin=2)
-        self.chain_bins = {"z": bins[:, 0], "samples": bins[:, 1], "Rg2": bins[:, 2], "spanx": bins[:, 3]}
+        self.chain_bins = read_columns(os.path.join(directory, "chainBins.dat"), ("z", "samples", "Rg2", "spanx"))
 
     def _extension(self):
         """The chains' extension along the flow (span x) and R_g^2 by where their centre lies, from the
-        snapshots (chainExtension.py): the central chains (centre within h / 3 of the channel's centre)
+        snapshots (chainExtension.py, dpdfoam.snapshots): the central chains (centre within h / 3 of the channel's centre)
         against the outer ones (beyond 2 h / 3), per super-block, and binned across the channel."""
-        rows = chainExtension.case_rows(self.path, "channelProfile")
+        rows = extension_rows(self.path, "channelProfile")
         if rows is None:
             sys.exit(f"plotResults: {self.path} has neither postProcessing/chainExtension nor the snapshots to measure it")
-        rows = rows[rows[:, 0] >= self.window_start]
-        k = np.minimum(np.floor((rows[:, 0] - self.window_start) / self.super_time).astype(int), self.m - 1)
-        offset = np.abs(rows[:, 2] - self.centre)
+        rows, k = rows_in_blocks(rows, self.window_start, self.super_time, self.m)
+        offset, span = np.abs(rows[:, 2] - self.centre), rows[:, 3]
         self.central_edge, self.outer_edge = CENTRAL_FRACTION * self.h, OUTER_FRACTION * self.h
-        regions = {"central": offset < self.central_edge, "outer": offset > self.outer_edge}
         snapshots = len(np.unique(rows[:, 0]))
-
-        def per_block(sel, col):
-            return np.array([rows[sel & (k == j), col].mean() if np.any(sel & (k == j)) else np.nan for j in range(self.m)])
-
         self.ext = {"snapshots": snapshots}
-        for name, sel in regions.items():
-            self.ext[name] = {"spanx": Stat(per_block(sel, 3)), "Rg2": Stat(per_block(sel, 4)),
-                              "chains": sel.sum() / max(snapshots, 1)}
-        self.ext["diff"] = Stat(per_block(regions["outer"], 3) - per_block(regions["central"], 3))
+        for name, sel in (("central", offset < self.central_edge), ("outer", offset > self.outer_edge)):
+            self.ext[name] = {"spanx": Stat(block_means(span, np.where(sel, k, -1), self.m)),
+                              "Rg2": Stat(block_means(rows[:, 4], np.where(sel, k, -1), self.m)), "chains": sel.sum() / max(snapshots, 1)}
         self.ext["ratio"] = self.ext["outer"]["spanx"].value / self.ext["central"]["spanx"].value
         # The slope of span_x on the distance from the centre, every chain counted (what the check reads:
         # the outer third holds few chains where the beads are depleted at the walls).
@@ -243,13 +170,8 @@ class Case:
                                   for j in range(self.m)])
         # Binned by the centre (bins of 2, as chainBins), errors over the super-blocks.
         edges = np.arange(self.walls[0], self.walls[1] + 1e-9, 2.0 if self.d > 12 else 1.0)
-        which = np.digitize(rows[:, 2], edges) - 1
-        means = np.array([[rows[(which == b) & (k == j), 3].mean() if np.any((which == b) & (k == j)) else np.nan
-                           for b in range(len(edges) - 1)] for j in range(self.m)])
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)  # bins no chain's centre reached: NaN
-            self.ext["bins"] = {"z": 0.5 * (edges[1:] + edges[:-1]), "spanx": np.nanmean(means, axis=0),
-                                "err": np.nanstd(means, axis=0, ddof=1) / np.sqrt(np.sum(np.isfinite(means), axis=0))}
+        mean, error = nan_block_mean(binned_block_means(span, k, np.digitize(rows[:, 2], edges) - 1, len(edges) - 1, self.m))
+        self.ext["bins"] = {"z": 0.5 * (edges[1:] + edges[:-1]), "spanx": mean, "err": error}
 
     def _paper(self, control, pp):
         """The paper's grid over its window (paperField, paperFluid, paperBeads: 200 x 20 bins in the
@@ -257,23 +179,17 @@ class Case:
         self.paper = None
         if not os.path.exists(os.path.join(pp, "paperField.dat")):
             return
-        field = paper_grid(os.path.join(pp, "paperField.dat"))
-        fluid = paper_grid(os.path.join(pp, "paperFluid.dat"))
-        beads = paper_grid(os.path.join(pp, "paperBeads.dat"))
+        field, fluid, beads = (averaged_along(read_table(os.path.join(pp, f"paper{n}.dat"))) for n in ("Field", "Fluid", "Beads"))
         z, n = field["z"], field["count"]
-        up, low = z > self.centre, z < self.centre
-        bulk, near = np.abs(z - self.centre) < 0.5 * self.h, (z - self.walls[0] < 1.0) | (self.walls[1] - z < 1.0)
+        bulk, near = self.bulk(z), self.near(z)
+        ux = lambda region=slice(None): weighted_mean(field["ux"], n, region)  # noqa: E731
         p = {"start": float(dictionary_value(control, "functions/paperField/startTime")), "nz": len(z), "nx": field["nx"],
-             "field": field, "fluid": fluid, "beads": beads,
-             "U": float(np.nansum(field["ux"] * n) / n.sum()),
-             "uc": float(np.nansum((field["ux"] * n)[np.abs(z - self.centre) < 1.0]) / n[np.abs(z - self.centre) < 1.0].sum()),
-             "A": float(np.nansum((field["ux"] * n)[up]) / n[up].sum() - np.nansum((field["ux"] * n)[low]) / n[low].sum()),
-             "kT": float(np.nansum((field["kT"] * n)[bulk]) / n[bulk].sum()),
+             "field": field, "fluid": fluid, "beads": beads, "U": ux(), "uc": ux(np.abs(z - self.centre) < 1.0),
+             "A": ux(z > self.centre) - ux(z < self.centre), "kT": weighted_mean(field["kT"], n, bulk),
              "fluid_bulk": float(fluid["density"][bulk].mean()), "fluid_near": float(fluid["density"][near].mean())}
         if self.chains:
-            nb, width = beads["count"], z[1] - z[0]
             edge = SHARE_FRACTION * self.h
-            p["share"] = float((nb * overlap(z, width, self.centre - edge, self.centre + edge)).sum() / nb.sum())
+            p["share"] = float(band_share(beads["count"], z, z[1] - z[0], self.centre - edge, self.centre + edge))
             p["near_bulk"] = float(beads["density"][near].mean() / beads["density"][bulk].mean())
         self.paper = p
 
@@ -285,13 +201,9 @@ class Case:
             return
         text = read_text(path)
         m = re.search(r"Particles\s*:\s*(\d+)\s*\((\d+) mobile", text)
-        if m:
-            self.particles, self.mobile = int(m.group(1)), int(m.group(2))
+        self.particles = int(m.group(1)) if m else 0
         self.steps, self.seconds, self.rate = run_finished(text)
-        times = log_values(text, r"^Time = (\S+)", flags=re.M)
-        velocities = log_values(text, r"meanVelocity = \((\S+)")
-        n = min(len(times), len(velocities))
-        self.history = np.array(times[:n]), np.array(velocities[:n])
+        self.history = log_series(text, r"meanVelocity = \((\S+)")
 
     @property
     def reynolds(self):
@@ -320,13 +232,11 @@ def heat_checks(checks, chain_cases, ref, budget):
     rises is motion neighbours share (etc/pairTemperature.py; README): the heat, the kT of the
     neighbours' relative velocities, is what the thermostat holds. Without chains the flow's viscous
     heating raises it by H0 = pair kT0 - kT_set; the chains slow the flow and carry part of the
-    stress, so the heat of a chain case lies between the set kT and the chain-free flow's:
-    kT_set - 3 sigma < pair kT < pair kT0 + 3 sigma (Student-t, combined errors for the upper bound),
-    each allowance within the budget (module docstring, "Bounds")."""
+    stress, so the heat of a chain case lies between the set kT and the chain-free flow's."""
     for c in chain_cases:
         above, below = c.kT_pair.value - ref.kT_pair.value, c.kT_pair.value - KT_SET
         _, allow_up, dof_up = combined(c.kT_pair.term(), ref.kT_pair.term())
-        allow_down = student_t(Z_SIGMA, c.kT_pair.dof) * c.kT_pair.error
+        allow_down = c.kT_pair.allowance()
         checks.add(f"the chains add no heat to the bulk, {c.label}: kT_set - 3 sigma < pair kT < pair kT(no chains) + 3 sigma, "
                    f"each 3 sigma within {budget:g}",
                    above < allow_up and below > -allow_down and max(allow_up, allow_down) <= budget,
@@ -336,15 +246,13 @@ def heat_checks(checks, chain_cases, ref, budget):
                    c.kT_pair.value, c.kT_pair.error, ref.kT_pair.error)
 
 
-def symmetry_check(checks, ref, budget):
-    """Without chains the channel is symmetric: the two halves' mean velocities agree within 3 standard
-    errors of their difference, that allowance within the budget (of U)."""
-    a = ref.asym["A"]
-    rel, allow = a.value / ref.U.value, student_t(Z_SIGMA, a.dof) * a.error / ref.U.value
-    checks.add(f"the profile without chains is symmetric: |U(upper half) - U(lower half)| / U < 3 sigma, 3 sigma within {budget:g}",
-               abs(rel) < allow and allow <= budget,
-               f"U(upper) - U(lower) = {a.fmt(5)} = {rel:+.5f} U, 3 sigma = {allow:.5f} U; bins u(z) - u(-z): chi2/dof "
-               f"{ref.asym['chi2']:.2f} over {ref.asym['pairs']} pairs", a.value, a.error)
+def depletion_checks(checks, chain_cases):
+    """Beads depleted at the walls: the bead density within one cutoff of a wall over the bulk's, below 1
+    by more than 3 standard errors (of the ratio over the super-blocks)."""
+    for c in chain_cases:
+        allow = c.depletion.allowance()
+        checks.add(f"beads depleted at the walls, {c.label}: 1 - rho_near / rho_bulk > 3 sigma", 1.0 - c.depletion.value > allow,
+                   f"rho_near / rho_bulk = {c.depletion.fmt(4)}, 1 - ratio = {1 - c.depletion.value:.4f}, 3 sigma = {allow:.4f}")
 
 
 def deficit_checks(checks, n_sweep, l_sweep):
@@ -365,6 +273,17 @@ def deficit_checks(checks, n_sweep, l_sweep):
                        f"(sigma {sigma:.4f}, dof {dof:.0f})")
 
 
+def symmetry_check(checks, ref, budget):
+    """Without chains the channel is symmetric: the two halves' mean velocities agree within 3 standard
+    errors of their difference, that allowance within the budget (of U)."""
+    a = ref.asym["A"]
+    rel, allow = a.value / ref.U.value, a.allowance() / ref.U.value
+    checks.add(f"the profile without chains is symmetric: |U(upper half) - U(lower half)| / U < 3 sigma, 3 sigma within {budget:g}",
+               abs(rel) < allow and allow <= budget,
+               f"U(upper) - U(lower) = {a.fmt(5)} = {rel:+.5f} U, 3 sigma = {allow:.5f} U; bins u(z) - u(-z): chi2/dof "
+               f"{ref.asym['chi2']:.2f} over {ref.asym['pairs']} pairs", a.value, a.error)
+
+
 def extension_checks(checks, chain_cases):
     """The chains near the walls, in the strongest shear, are more extended along the flow than those
     about the centre, where the shear vanishes: the slope of span_x on the distance of the chain's centre
@@ -373,7 +292,7 @@ def extension_checks(checks, chain_cases):
     where the beads are depleted at the walls the outer third holds few chains, too few for a check."""
     for c in chain_cases:
         s, e = c.ext["slope"], c.ext
-        allow = student_t(Z_SIGMA, s.dof) * s.error
+        allow = s.allowance()
         checks.add(f"the chains' extension along the flow grows towards the walls, {c.label}: slope of span_x on |z_c| > 3 sigma",
                    s.value > allow,
                    f"slope {s.fmt(4)}, 3 sigma = {allow:.4f}; span_x outer (|z_c| > {c.outer_edge:.3g}) {e['outer']['spanx'].fmt(3)}, "
@@ -405,12 +324,7 @@ def main():
 
     checks = Checks()
     heat_checks(checks, chain_cases, ref, HEAT_BUDGET[test])
-    # Beads depleted at the walls: bead density within one cutoff of a wall over the bulk's, below 1 by
-    # more than 3 standard errors (of the ratio over the super-blocks).
-    for c in chain_cases:
-        allow = student_t(Z_SIGMA, c.depletion.dof) * c.depletion.error
-        checks.add(f"beads depleted at the walls, {c.label}: 1 - rho_near / rho_bulk > 3 sigma", 1.0 - c.depletion.value > allow,
-                   f"rho_near / rho_bulk = {c.depletion.fmt(4)}, 1 - ratio = {1 - c.depletion.value:.4f}, 3 sigma = {allow:.4f}")
+    depletion_checks(checks, chain_cases)
     deficit_checks(checks, n_sweep, l_sweep)
     symmetry_check(checks, ref, SYMMETRY_BUDGET[test or "-lowG" in sys.argv[1:]])
     extension_checks(checks, chain_cases)
@@ -524,26 +438,30 @@ def results_lines(cases, ref, test, name):
         + ", ".join(f"{c.label} {c.rate:.3e} ({100 * (c.rate / ref.rate - 1):+.1f} %)" for c in cases if c.chains)]
 
 
+
+def stat_bars(ax, x, stats, fmt, **style):
+    """Values with their standard errors as error bars."""
+    ax.errorbar(x, [s.value for s in stats], yerr=[s.error for s in stats], fmt=fmt, **style)
+
+
 def draw_profiles(ax, cases, ref, colour):
     """Velocity, density (all mobile particles, the fluid), kT (all, the fluid, the beads), bead density,
     the asymmetry and the chains by where they lie, across the channel, one colour per case; the walls
     dotted, the central half's edges dashed. The paper's grid (its window) dotted over the long window."""
     for c in cases:
-        t, col = c.table, colour[c.label]
+        t, f, col, a = c.table, c.fluid_table, colour[c.label], c.asym
         ax[0, 0].errorbar(t["z"], t["ux"], yerr=t["uxErr"], fmt="-", color=col, lw=1.2, label=f"{c.label}: U {c.U.value:.3f}")
         ax[0, 1].plot(t["z"], t["density"], "-", color=col, lw=1.2, label=f"{c.label}: all")
-        ax[0, 1].plot(c.fluid_table["z"], c.fluid_table["density"], "--", color=col, lw=1.0, label=f"{c.label}: fluid")
+        ax[0, 1].plot(f["z"], f["density"], "--", color=col, lw=1.0, label=f"{c.label}: fluid")
         ax[0, 2].plot(t["z"], t["kT"], "-", color=col, lw=1.2, label=f"{c.label}: bulk {c.kT.value:.4f}")
         # The bulk's heat (pair kT, docs/analysis.md 5.5) over the central half: what the check reads.
         ax[0, 2].plot([c.centre - 0.25 * c.d, c.centre + 0.25 * c.d], [c.kT_pair.value] * 2, "--", color=col, lw=1.0,
                       label=f"{c.label}: heat (pair kT) {c.kT_pair.value:.4f}")
-        ax[0, 3].plot(c.fluid_table["z"], c.fluid_table["kT"], "-", color=col, lw=1.2, label=f"{c.label} fluid")
-        a = c.asym
+        ax[0, 3].plot(f["z"], f["kT"], "-", color=col, lw=1.2, label=f"{c.label} fluid")
         ax[1, 1].plot(a["z"], a["du"], "-", color=col, lw=1.0, label=f"{c.label}: A {a['A'].value:+.3f} +- {a['A'].error:.3f}")
         ax[1, 1].fill_between(a["z"], -3 * a["err"], 3 * a["err"], color=col, alpha=0.12, lw=0)
         if c.paper:
-            p = c.paper["field"]
-            ax[0, 0].plot(p["z"], p["ux"], ":", color=col, lw=1.0)
+            ax[0, 0].plot(c.paper["field"]["z"], c.paper["field"]["ux"], ":", color=col, lw=1.0)
         if c.chains:
             b, cb, e = c.bead_table, c.chain_bins, c.ext["bins"]
             ax[0, 3].plot(b["z"][b["count"] > 0], b["kT"][b["count"] > 0], "--", color=col, lw=1.0, label=f"{c.label} beads")
@@ -583,19 +501,17 @@ def draw_profiles(ax, cases, ref, colour):
 
 def draw_sweeps(ax, cases, ref, n_sweep, l_sweep, colour):
     """Chain size against nChain and ChainLen, the deficit against the beads, the start-up."""
-    for a, series, key, xlabel in ((ax[2, 0], n_sweep, "chains", "nChain"), (ax[2, 1], l_sweep, "length", "ChainLen")):
+    for a, series, key, other, xlabel in ((ax[2, 0], n_sweep, "chains", "length", "nChain"), (ax[2, 1], l_sweep, "length", "chains", "ChainLen")):
         s = [c for c in series if c.chains]
         x = [getattr(c, key) for c in s]
-        for get, fmt, name in ((lambda c: c.Rg2, "o-", "R_g = sqrt<R_g^2>"), (lambda c: c.Ree2, "s-", "sqrt<R_ee^2>")):
-            a.errorbar(x, [math.sqrt(get(c).value) for c in s], yerr=[0.5 * get(c).error / math.sqrt(get(c).value) for c in s],
+        for size, fmt, name in ((lambda c: c.Rg2, "o-", "R_g = sqrt<R_g^2>"), (lambda c: c.Ree2, "s-", "sqrt<R_ee^2>")):
+            a.errorbar(x, [math.sqrt(size(c).value) for c in s], yerr=[0.5 * size(c).error / math.sqrt(size(c).value) for c in s],
                        fmt=fmt, label=name)
-        a.errorbar(x, [c.spanx.value for c in s], yerr=[c.spanx.error for c in s], fmt="^-", label="extension along x (span)")
-        a.errorbar(x, [c.ext["outer"]["spanx"].value for c in s], yerr=[c.ext["outer"]["spanx"].error for c in s], fmt="v--",
-                   label="span, outer chains")
-        a.errorbar(x, [c.ext["central"]["spanx"].value for c in s], yerr=[c.ext["central"]["spanx"].error for c in s], fmt="d--",
-                   label="span, central chains")
-        label(a, f"chain size against {xlabel} ({'ChainLen' if key == 'chains' else 'nChain'} "
-                 f"{s[0].length if key == 'chains' else s[0].chains})", xlabel, "length", legend=8)
+        stat_bars(a, x, [c.spanx for c in s], "^-", label="extension along x (span)")
+        stat_bars(a, x, [c.ext["outer"]["spanx"] for c in s], "v--", label="span, outer chains")
+        stat_bars(a, x, [c.ext["central"]["spanx"] for c in s], "d--", label="span, central chains")
+        label(a, f"chain size against {xlabel} ({'ChainLen' if key == 'chains' else 'nChain'} {getattr(s[0], other)})",
+              xlabel, "length", legend=8)
     for series, name, marker in ((n_sweep, "nChain sweep", "o-"), (l_sweep, "ChainLen sweep", "s--")):
         ax[2, 2].errorbar([c.beads for c in series], [c.deficit for c in series], yerr=[c.deficit_error for c in series],
                           fmt=marker, label=name)
@@ -613,12 +529,10 @@ def draw_sweeps(ax, cases, ref, n_sweep, l_sweep, colour):
 
 def draw_chains(a, show, snapshot):
     """The chains of a case in a snapshot, x-z, each unwrapped from its bond vectors with its centre in the box."""
-    lo, hi = snapshot_box(snapshot)
-    length = hi[0] - lo[0]
-    for k, (c, p) in enumerate(sorted(unwrapped_chains(snapshot).items())):
-        shift = length * np.floor((p[:, 0].mean() - lo[0]) / length)  # the chain's centre into the box
-        a.plot(p[:, 0] - shift, p[:, 2], "-", color=plt.cm.tab20(k % 20), lw=0.8)
-        a.plot(p[:, 0] - shift, p[:, 2], ".", color=plt.cm.tab20(k % 20), ms=2.5)
+    lo, hi, chains = chains_in_box(snapshot)
+    for k, p in enumerate(chains):
+        a.plot(p[:, 0], p[:, 2], "-", color=plt.cm.tab20(k % 20), lw=0.8)
+        a.plot(p[:, 0], p[:, 2], ".", color=plt.cm.tab20(k % 20), ms=2.5)
     a.axvline(lo[0], color="k", lw=0.6); a.axvline(hi[0], color="k", lw=0.6)
     for zw in show.walls:
         a.axhline(zw, color="gray", ls=":")
@@ -629,17 +543,11 @@ def draw_chains(a, show, snapshot):
 
 def draw_bead_map(fig, a, case):
     """The beads' density on the paper's grid (z-x) over its window."""
-    path = os.path.join(latest_dir(os.path.join(case.path, "postProcessing/profileBins/*")), "paperBeads.dat")
-    t = read_table(path)
-    zs, xs = np.unique(t["z"]), np.unique(t["x"])
-    grid = np.full((len(zs), len(xs)), np.nan)
-    grid[np.searchsorted(zs, t["z"]), np.searchsorted(xs, t["x"])] = t["density"]
-    dz, dx = zs[1] - zs[0], xs[1] - xs[0]
-    im = a.imshow(grid, origin="lower", aspect="auto", cmap="viridis",
-                  extent=[xs[0] - 0.5 * dx, xs[-1] + 0.5 * dx, zs[0] - 0.5 * dz, zs[-1] + 0.5 * dz])
-    fig.colorbar(im, ax=a, label="bead density")
-    label(a, f"{case.label}: bead density on the paper's grid ({len(zs)} x {len(xs)}, z x), t {case.paper['start']:g}-{case.end:g}",
-          "x", "z")
+    table = read_table(os.path.join(latest_dir(os.path.join(case.path, "postProcessing/profileBins/*")), "paperBeads.dat"))
+    grid, extent = image(table, "density")
+    fig.colorbar(a.imshow(grid, origin="lower", aspect="auto", cmap="viridis", extent=extent), ax=a, label="bead density")
+    label(a, f"{case.label}: bead density on the paper's grid ({grid.shape[0]} x {grid.shape[1]}, z x), "
+          f"t {case.paper['start']:g}-{case.end:g}", "x", "z")
 
 
 def plot(path, cases, ref, n_sweep, l_sweep, name):
@@ -651,10 +559,7 @@ def plot(path, cases, ref, n_sweep, l_sweep, name):
     maps = bool(show.paper)
     fig = plt.figure(figsize=(22, 25 if maps else 20))
     grid = fig.add_gridspec(5 if maps else 4, 4)
-    ax = np.empty((3, 4), dtype=object)
-    for i in range(3):
-        for j in range(4):
-            ax[i, j] = fig.add_subplot(grid[i, j])
+    ax = np.array([[fig.add_subplot(grid[i, j]) for j in range(4)] for i in range(3)], dtype=object)
     draw_profiles(ax, cases, ref, colour)
     draw_sweeps(ax, cases, ref, n_sweep, l_sweep, colour)
     draw_chains(fig.add_subplot(grid[3, 0:2]), show, show.snapshot0)

@@ -14,14 +14,9 @@ import subprocess
 import sys
 
 from dpdfoam.io import dictionary_value, set_dictionary_value, vector
-from dpdfoam.mask import case_mask, open_band, runs
+from dpdfoam.mask import case_mask, crack_in_box
 
 LINE = "lines/crack"
-
-
-def middle_of_first_run(flags):
-    a, n = runs(flags)[0]
-    return a + (n - 1) // 2
 
 
 def line_fits(band_z, lo, hi):
@@ -36,19 +31,16 @@ def line_fits(band_z, lo, hi):
 
 def main():
     solid, mask, lo, hi = case_mask()
-    pixel = (hi - lo) / solid.shape[::-1]  # (x, z) size of a pixel
-    crack = open_band(solid)
+    crack = crack_in_box(solid, lo, hi)
     if crack is None:
         print(f"crackFromMask: {mask} has no crack (no row fluid across the box): the case's lines are kept")
         return 0
-    (first, last), widths = crack
-    band_z = lo[1] + first * pixel[1], lo[1] + (last + 1) * pixel[1]
+    band_z, widths, sections = crack
     print(f"crackFromMask: {mask}: crack band z {band_z[0]:g} to {band_z[1]:g}, width {widths.min()}-{widths.max()} pixels")
     if line_fits(band_z, lo, hi):
         print("crackFromMask: the case's crack line runs along it: the case is kept as it is")
         return 0
     z = 0.5 * (band_z[0] + band_z[1])
-    sections = [lo[0] + (middle_of_first_run(widths == w) + 0.5) * pixel[0] for w in (widths.min(), widths.max())]
     set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/start", f"({lo[0]:g} 0 {z:g})")
     set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/end", f"({hi[0]:g} 0 {z:g})")
     set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/nPoints", f"{int(round(4 * (hi[0] - lo[0]))) + 1}")

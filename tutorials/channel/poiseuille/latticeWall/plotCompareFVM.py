@@ -20,28 +20,27 @@ import numpy as np
 
 from dpdfoam.channel import poiseuille_velocity
 from dpdfoam.checks import Checks, write_results
+from dpdfoam.io import foam_latest_fields, foam_latest_time, latest_fit, read_dict
+from dpdfoam.plots import label, plt, save
 
 # The profile's own noise (compareFVM's noiseL2) first below a budget, so that the 3 % bound decides:
 # measured 0.0036 in the test (d = 10), less at full size.
 NOISE_BUDGET = 0.01
-from dpdfoam.io import foam_latest_time, foam_vector_field, read_dict
-from dpdfoam.plots import label, plt, save
 
 
 def main():
     t = foam_latest_time("postProcessing/compareFVM")
     cmp = read_dict(f"postProcessing/compareFVM/{t}/compare.dat")
     zb, ud, ue, uf = np.loadtxt(f"postProcessing/compareFVM/{t}/profiles.dat")[:, :4].T
-    fit = read_dict(f"postProcessing/fitSlipLength/{foam_latest_time('postProcessing/fitSlipLength')}/fit.dat")
+    fit = latest_fit()
     rec = read_dict("simpleFoam/constant/dpdCase")
     z_lo, z_hi = rec["meshMin"][2], rec["meshMax"][2]
     d, g, nu = z_hi - z_lo, rec["g"][0], rec["nu"]
     h = d / rec["cells"][2]
 
     # 1. simpleFoam against the analytic parabola.
-    ft = foam_latest_time("simpleFoam")
-    z = foam_vector_field(f"simpleFoam/{ft}/C")[:, 2]
-    u = foam_vector_field(f"simpleFoam/{ft}/U")[:, 0]
+    ft, (cells, velocity) = foam_latest_fields("simpleFoam", "C", "U")
+    z, u = cells[:, 2], velocity[:, 0]
     analytic = poiseuille_velocity(z, z_lo, z_hi, g, nu)
     u_max = g * d * d / (8 * nu)
     solver_error = np.max(np.abs(u - (analytic + g * h * h / (8 * nu)))) / u_max

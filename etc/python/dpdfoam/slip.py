@@ -1,0 +1,142 @@
+"""Tunable-slip and striped walls: a friction sweep read backwards (the gamma_L for a slip length),
+slipTensor's runs with the two walls' mean slips, stripedSlip's continuum reference of a striped wall,
+and a stripeGrid's fluid layers over the stripes' sectors (docs/walls.md 3.5-3.7)."""
+import math
+import re
+import subprocess
+
+import numpy as np
+
+from .channel import walls_mean_slip
+from .io import read_sweep
+
+
+def friction_for_slip(target, gammas, b, err):
+    """gamma_L with slip length `target`, linear in 1/gamma_L between the bracketing sweep points (the
+    tunable-slip wall's b is nearly linear in 1/gamma_L: b/zc ~ 2/alpha - 7/15, docs/walls.md 3.5), and
+    the slip length's error there (interpolated). None when no neighbouring pair brackets it."""
+    order = np.argsort(gammas)
+    for lo, hi in zip(order[:-1], order[1:]):
+        if (b[lo] - target) * (b[hi] - target) <= 0.0:
+            w = (target - b[lo]) / (b[hi] - b[lo])
+            return 1.0 / ((1 - w) / gammas[lo] + w / gammas[hi]), (1 - w) * err[lo] + w * err[hi]
+    return None
+
+
+def read_slip_tensor(path, offset=0.0):
+    """runSweep's table of slipTensor's runs, with the two walls' mean slips moved by offset (from the
+    planes to where the wall acts, b = apparent + offset): bParallel, bPerpendicular, bEffective, each
+    with its <name>Error; "angle": theta to 0.01 degree (the force's components were written to 8 digits)."""
+    s = read_sweep(path)
+    for name in ("Parallel", "Perpendicular"):
+        b, s["b" + name + "Error"] = walls_mean_slip(s, "slip" + name)
+        s["b" + name] = b + offset
+    s["bEffective"], s["bEffectiveError"] = s["slipEffective"] + offset, s["slipEffectiveError"]
+    s["angle"] = [round(float(a), 2) for a in s["theta"]]
+    return s
+
+
+def striped_slip(gas_fraction, slip, height, period, angles):
+    """stripedSlip's continuum result for two walls in phase: slipParallel, slipPerpendicular and
+    "ratio", the transverse flux ratio per angle."""
+    text = subprocess.run(["stripedSlip", "-period", f"{period:g}", "-gasFraction", f"{gas_fraction:g}",
+                           "-slip", f"{slip:.8g}", "-height", f"{height:.8g}", "-walls", "2",
+                           "-angles", ",".join(f"{a:g}" for a in angles)], check=True, capture_output=True, text=True).stdout
+    d = {k: float(v) for k, v in re.findall(r"^(slipParallel|slipPerpendicular)\s+(\S+);", text, re.M)}
+    d["ratio"] = {float(a): float(r) for a, r in re.findall(r"angle(\S+) \{ slip \S+; transverseFluxRatio (\S+); \}", text)}
+    return d
+
+
+class StripedReference:
+    """The continuum reference for a striped wall (gas fraction, the gas sectors' slip b with its
+    calibration error, period) in a channel of height H, with the no-slip sectors' residual slip
+    (b0, e0): to first order in b0 / L such a wall is a no-slip / (b - b0) wall b0 behind it, so the
+    channel is 2 b0 higher and b_eff b0 larger. Entries: slipParallel, slipPerpendicular, anisotropy
+    (their difference, which does not depend on where the wall acts) and ratio {angle: flux ratio}.
+    error(key) is the calibration's share: half the spread of the reference at each sector's slip +- its
+    error, the two in quadrature."""
+
+    def __init__(self, gas_fraction, slip, slip_error, height, period, residual, angles=(45.0,), label=None):
+        b0, e0 = residual
+        self.angles, self.label = list(angles), label
+
+        def solve(b, residual):
+            d = striped_slip(gas_fraction, b - residual, height + 2 * residual, period, self.angles)
+            d["slipParallel"] += residual
+            d["slipPerpendicular"] += residual
+            d["anisotropy"] = d["slipParallel"] - d["slipPerpendicular"]
+            return d
+
+        self.value = solve(slip, b0)
+        self.shifted = [solve(slip + slip_error, b0), solve(max(slip - slip_error, 1e-9), b0),
+                        solve(slip, b0 + e0), solve(slip, b0 - e0)]
+
+    def __getitem__(self, key):
+        return self.value[key]
+
+    @staticmethod
+    def _entry(d, key, angle):
+        return d[key] if angle is None else d[key][angle]
+
+    def at(self, key, angle=None):
+        """An entry; the ratio's at an angle."""
+        return self._entry(self.value, key, angle)
+
+    def error(self, key, angle=None):
+        s = [self._entry(r, key, angle) for r in self.shifted]
+        return math.hypot(0.5 * (s[0] - s[1]), 0.5 * (s[2] - s[3]))
+
+    def effective(self, theta):
+        """b_eff = b_par cos^2 theta + b_perp sin^2 theta (theta in degrees from the stripes)."""
+        rad = np.radians(theta)
+        return self["slipParallel"] * np.cos(rad) ** 2 + self["slipPerpendicular"] * np.sin(rad) ** 2
+
+
+def distance_to_walls(table, walls):
+    return np.minimum(table["z"] - walls[0], walls[1] - table["z"])
+
+
+def gas_sectors(x, period, gas_fraction):
+    """Whether x lies over a gas sector: the first gas_fraction x period of each period from x = 0 (the
+    stripes' offset)."""
+    return np.mod(x, period) < gas_fraction * period
+
+
+def near_wall_sectors(table, walls, period, gas_fraction, depth):
+    """Count-weighted density and kT, with errors, of a stripeGrid's bins within depth of a wall over the
+    gas sectors and over the no-slip ones: {"gas" | "noSlip": {"density" | "kT": (mean, error)}}, and
+    the mask of the bins within depth."""
+    near = distance_to_walls(table, walls) < depth
+    gas = gas_sectors(table["x"], period, gas_fraction)
+    out = {}
+    for name, sel in (("gas", near & gas), ("noSlip", near & ~gas)):
+        w = table["count"][sel]
+        out[name] = {q: (float(np.sum(w * table[q][sel]) / np.sum(w)),
+                         float(np.sqrt(np.sum((w * table[q + "Err"][sel]) ** 2)) / np.sum(w))) for q in ("density", "kT")}
+    return out, near
+
+
+def first_layer(table, walls, period, gas_fraction, cutoff):
+    """The first fluid layer against each wall (from the plane to the first density minimum past the
+    peak: packed by smooth walls, a gentle rise with the fluid behind them), from a run's stripeGrid: its
+    mean velocity over the period (mass-weighted, both walls) across the stripes (x) and along them (y),
+    its areal density over the downstream half of the gas sectors (downstream: in the direction of the
+    flow across the stripes) against the upstream half, relative, with the error of bins taken as
+    independent, and its depth. None without a minimum within two cutoffs of the plane."""
+    t = table
+    d = distance_to_walls(t, walls)
+    depths = np.unique(np.round(d, 9))
+    profile = np.array([np.mean(t["density"][np.isclose(d, v)]) for v in depths])
+    peak = int(np.argmax(profile))
+    minimum = peak + int(np.argmax(np.diff(profile[peak:]) > 0))  # the first bin where density rises again
+    if depths[minimum] > 2.0 * cutoff:
+        return None  # no packed layer (a fluid without conservative force: its density is the bulk's)
+    layer = d < depths[minimum] - 1e-9
+    dz = depths[1] - depths[0]
+    mass = t["density"][layer] * dz
+    velocity = {axis: float(np.sum(mass * t["u" + axis][layer]) / np.sum(mass)) for axis in ("x", "y")}
+    phase = np.mod(t["x"][layer], period) / (gas_fraction * period)  # 0..1 over a gas sector
+    downstream = phase >= 0.5 if velocity["x"] >= 0.0 else phase < 0.5
+    (down, de), (up, ue) = [(np.sum(mass[sel]), math.sqrt(np.sum((t["densityErr"][layer][sel] * dz) ** 2)))
+                            for sel in (downstream & (phase < 1.0), ~downstream & (phase < 1.0))]
+    return velocity, (down / up - 1.0, math.hypot(de / up, down * ue / up ** 2)), depths[minimum] - 0.5 * dz
