@@ -1,5 +1,6 @@
 #include "case/DpdProperties.hpp"
 
+#include "case/CaseSlipCalibrations.hpp"
 #include "case/RunCompatibility.hpp"
 
 #include "geometry/GeometryDictionary.hpp"
@@ -113,7 +114,10 @@ std::shared_ptr<const Dictionary> geometryBlock(const Dictionary& d) {
 }
 
 // Each wall names its type (walls/WallTypes.hpp), which reads the rest of its sub-dictionary.
-WallList readWalls(const Dictionary& d, int dimension, double cutoff, std::vector<PlanarWallSettings>& planes) {
+// slipLengths: what a wall that asks for a slip length is resolved against (null: such a wall is refused).
+WallList readWalls(const Dictionary& d, DpdModel& m, const SlipLengthResolver* slipLengths) {
+    const int dimension = m.dimension;
+    const double cutoff = m.cutoff;
     WallList walls;
     if (!d.found("walls")) return walls;
     const Dictionary& wd = d.subDict("walls");
@@ -124,7 +128,8 @@ WallList readWalls(const Dictionary& d, int dimension, double cutoff, std::vecto
         const std::string type = w.get<std::string>("type");
         if (!wallRegistry().has(type))
             w.fail("type", "unknown wall type '" + type + "' (expected " + wallRegistry().nameList() + ")");
-        walls.add(wallRegistry().make(type, w, WallReadContext{name, walls.size(), dimension, cutoff, geometry, &planes}));
+        walls.add(wallRegistry().make(type, w, WallReadContext{name, walls.size(), dimension, cutoff, geometry,
+                                                               &m.planarWalls, slipLengths, &m.wallNotes}));
     }
     return walls;
 }
@@ -222,7 +227,10 @@ std::vector<const PlanarWallSettings*> DpdModel::planes() const {
     return p;
 }
 
-DpdModel readDpdModel(const Dictionary& d) {
+namespace {
+
+// caseDir null: no case, so a wall that asks for a slip length is refused.
+DpdModel readModel(const Dictionary& d, const std::string* caseDir) {
     // geometry: the solid of any shape, read where it is used (geometry/GeometryDictionary).
     d.checkKeys({"dimension", "kT", "cutoff", "seed", "weightExponent", "species", "pairCoeffs", "integrator",
                  "bodyForce", "bonds", "walls", "stability", "geometry", "geometryWall"});
@@ -241,17 +249,31 @@ DpdModel readDpdModel(const Dictionary& d) {
     m.bodyForce = readBodyForce(d, m.dimension);  // forces/BodyForceTypes.cpp
     m.bondPotential = readBondPotential(d);         // forces/BondPotentialTypes.cpp
     if (m.bondPotential) m.bondedPairs = BondedPairs::read(d.subDict("bonds"));
-    m.walls = readWalls(d, m.dimension, m.cutoff, m.planarWalls);
+    if (caseDir) {
+        const CaseSlipCalibrations calibrations(m, d, *caseDir);
+        m.walls = readWalls(d, m, &calibrations);
+    } else {
+        m.walls = readWalls(d, m, nullptr);
+    }
     addGeometryWall(d, m.dimension, m.cutoff, m);
     checkCompatibility(caseParts(m));  // the integrator refuses what it cannot run
     m.stability = readStability(d);
     return m;
 }
 
-DpdModel readDpdProperties(const std::string& caseDir) {
-    DpdModel m = readDpdModel(Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string()));
+}  // namespace
+
+DpdModel readDpdModel(const Dictionary& d) { return readModel(d, nullptr); }
+
+DpdModel readDpdModel(const Dictionary& d, const std::string& caseDir) {
+    DpdModel m = readModel(d, &caseDir);
     m.caseDir = caseDir;
     return m;
+}
+
+DpdModel readDpdProperties(const std::string& caseDir) {
+    return readDpdModel(Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string()),
+                        caseDir);
 }
 
 System buildSystem(const DpdModel& model, Snapshot snapshot, double dt, const std::string& snapshotFile,

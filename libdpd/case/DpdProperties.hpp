@@ -22,6 +22,9 @@
 //              // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; }: a plane's friction layer acting
 //              // on the fluid within zc (friction gammaL) with a WCA repulsion (walls/TunableSlipLayer.hpp);
 //              // its reflection defaults to specular, a safety net behind the WCA wall
+//              // slipLength 1; with tunableSlip { zc 1; epsilon 1; sigma 0.5; } (no gammaL): the wall
+//              // gives slip length 1 measured from its point, gammaL and the plane's offset from the
+//              // case's slip calibration (case/CaseSlipCalibrations.hpp, docs/walls.md 3.8)
 //   stability  { maxKTRatio 2; maxInsideWalls 0; checkInterval 100; }   // optional; checkInterval in
 //                                                 // steps, besides every report and every write
 //   bonds      { type FENE; H 6; rMax 3; bondedPairs { dpd all; } }   // optional: polymer chains (their
@@ -83,10 +86,14 @@ struct DpdModel {
     StabilitySettings stability;
     std::vector<std::string> pairNotes;  // pairs whose coefficients were mixed, for the log
     std::vector<std::string> inputNotes;  // older keywords read as their newer form, for the log
+    std::vector<std::string> wallNotes;   // what walls that ask for a slip length were given, for the log
 };
 
 // Reads and checks the dictionary; every error is an InputError naming file, line and keyword.
+// Without the case directory, a wall that asks for a slip length is refused: its friction and plane
+// come from the case's slip calibration (case/CaseSlipCalibrations.hpp).
 DpdModel readDpdModel(const Dictionary& dict);
+DpdModel readDpdModel(const Dictionary& dict, const std::string& caseDir);
 DpdModel readDpdProperties(const std::string& caseDir);
 
 // A ready-to-run system: the model's physics, the snapshot's particles (species matched by name),

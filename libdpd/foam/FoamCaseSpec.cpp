@@ -54,8 +54,14 @@ void readWalls(const Dictionary& dpdProperties, const DpdModel& model, FoamCaseS
         if (std::abs(w->velocity[axis]) > 0.0)
             dpdProperties.fail("walls", "wall '" + w->name + "' moves along its normal: no steady continuum case");
     s.wallAxis = axis;
-    s.lower = {lo->name, lo->point[axis], lo->velocity, 0.0};
-    s.upper = {hi->name, hi->point[axis], hi->velocity, 0.0};
+    // A wall that asks for a slip length (docs/walls.md 3.8) gives its twin the same b, from its point.
+    for (const PlanarWallSettings* w : {lo, hi})
+        if (w->asksSlipLength && w->slipLength > 0.0 && w->velocity.squaredNorm() > 0.0)
+            dpdProperties.fail("walls/" + w->name + "/slipLength",
+                               "the continuum twin has no slip on a moving wall yet (partialSlip holds the wall at rest)");
+    const auto slipOf = [](const PlanarWallSettings* w) { return w->asksSlipLength ? w->slipLength : 0.0; };
+    s.lower = {lo->name, lo->point[axis], lo->velocity, slipOf(lo)};
+    s.upper = {hi->name, hi->point[axis], hi->velocity, slipOf(hi)};
 }
 
 // A dictionary file with 'nu' (and 'slipLength'): fit.dat of fitSlipLength.
@@ -229,7 +235,7 @@ std::string findFitFile(const std::string& fileOrCase) {
 FoamCaseSpec makeFoamCaseSpec(const Dictionary& dict, const Dictionary& dpdProperties, const MakeFoamCaseInput& in) {
     dict.checkKeys({"foamCase", "nu", "nuFrom", "slipLength", "cellSize", "cells", "dimension", "box", "lines",
                     "maxIterations", "residual"});
-    const DpdModel model = readDpdModel(dpdProperties);
+    const DpdModel model = readDpdModel(dpdProperties, in.caseDir);
     FoamCaseSpec s;
     s.dpdCase = in.caseDir;
     s.foamCase = dict.getOrDefault<std::string>("foamCase", "simpleFoam");

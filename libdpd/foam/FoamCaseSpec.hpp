@@ -8,7 +8,8 @@
 //                               //   postProcessing/fitSlipLength/<time>/fit.dat has nu, or such a file;
 //                               //   default: this case's own latest fit.dat. (-nu on the command line wins.)
 //   slipLength  0;              // Navier slip length of the planar walls: a number, (lower upper), or
-//                               //   fitted (slipLength of the same fit.dat as nu); default 0 (no slip)
+//                               //   fitted (slipLength of the same fit.dat as nu); default: the b a wall
+//                               //   asks for in constant/dpdProperties (docs/walls.md 3.8), else 0 (no slip)
 //   cellSize    0.25;           // mesh spacing along the axes where the flow varies (default cutoff / 4)
 //   // cells    (1 1 40);       //   or the cell counts themselves
 //   dimension   2;              // 2: one cell thick in y, empty front and back; 3; default 2 when

@@ -66,7 +66,7 @@ Snapshot buildBlockFrozenWall(const Dictionary& d, const DpdModel& model, BlockF
     const std::vector<const PlanarWallSettings*> walls = model.planes();
     for (const PlanarWallSettings* w : walls)
         for (int a = 0; a < 3; ++a)
-            if (snap.box.isActiveAxis(a) && (w->point[a] < snap.box.lo[a] || w->point[a] > snap.box.hi[a]))
+            if (snap.box.isActiveAxis(a) && (w->actingPoint()[a] < snap.box.lo[a] || w->actingPoint()[a] > snap.box.hi[a]))
                 d.fail("box", "wall '" + w->name + "' of constant/dpdProperties lies outside the box");
     const std::string thin = model.walls.builtOn({snap.box, model.caseDir, model.cutoff}).thinWall(walls, snap.box, model.cutoff);
     if (!thin.empty())

@@ -50,7 +50,7 @@ struct Setup {
 void checkRecord(const Setup& s, const std::string& caseDir) {
     const Dictionary& r = s.record;
     const Dictionary props = Dictionary::readFile((fs::path(caseDir) / "constant" / "dpdProperties").string());
-    const DpdModel model = readDpdModel(props);
+    const DpdModel model = readDpdModel(props, caseDir);
     const Eigen::Vector3d g = model.bodyForce->uniform() ? model.bodyForce->value() : Eigen::Vector3d::Zero();
     if (!sameVector(r.get<Eigen::Vector3d>("g"), g, g.norm()))
         r.fail("g", "differs from the body force of " + props.fileName() + ": rerun makeFoamCase");

@@ -108,11 +108,11 @@ void readWallPositions(FitSlipLengthSetup& s) {
 
 }  // namespace
 
-FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictionary& dpdProperties) {
+FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictionary& dpdProperties, const std::string& caseDir) {
     FitSlipLengthSetup s;
     s.dict = dict;
     s.dpdProperties = dpdProperties;
-    s.model = readDpdModel(dpdProperties);
+    s.model = readDpdModel(dpdProperties, caseDir);
     const Dictionary& d = s.dict;
     d.checkKeys({"mode", "profile", "component", "exclude", "fitRange", "slipPredictionNu", "wallPositions", "superBlocks"});
     if (d.found("slipPredictionNu")) s.slipPredictionNu = d.getPositive<double>("slipPredictionNu");
@@ -140,6 +140,7 @@ void predictSlip(const FitSlipLengthSetup& s, const ProfileTableData& t, FitSlip
     if (s.hasWallPositions) return;  // walls of a geometry: no tunable slip
     const auto [lower, upper] = channelWalls(s, t, r.axis);
     if (!lower->hasTunableSlip && !upper->hasTunableSlip) return;
+    if (lower->asksSlipLength || upper->asksSlipLength) return;  // the ask is the prediction, from its point
     const bool given = s.slipPredictionNu > 0.0;
     const double measured = s.mode->measuredNu(r);
     const bool fitted = std::isfinite(measured);
@@ -389,7 +390,7 @@ std::vector<FitSlipLengthResult> runFitSlipLength(const FitSlipLengthOptions& o,
     const fs::path caseDir(o.caseDir);
     const Dictionary dict = Dictionary::readFile((caseDir / "system" / "fitSlipLengthDict").string());
     const Dictionary props = Dictionary::readFile((caseDir / "constant" / "dpdProperties").string());
-    const FitSlipLengthSetup setup = readFitSlipLengthSetup(dict, props);
+    const FitSlipLengthSetup setup = readFitSlipLengthSetup(dict, props, o.caseDir);
     const Dictionary control = setup.superBlocks.on() ? Dictionary::readFile((caseDir / "system" / "controlDict").string())
                                                     : Dictionary();
 

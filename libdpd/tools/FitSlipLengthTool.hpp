@@ -93,7 +93,7 @@ struct FitSlipLengthSetup {
 
 // Checks keywords (unknown ones, mode, component, exclude) and resolves the component and the body
 // force; InputError naming the file, line and keyword.
-FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictionary& dpdProperties);
+FitSlipLengthSetup readFitSlipLengthSetup(const Dictionary& dict, const Dictionary& dpdProperties, const std::string& caseDir);
 
 struct FitSlipLengthResult {
     std::shared_ptr<const FitMode> mode;

@@ -120,8 +120,7 @@ void printWalls(std::ostream& log, const System& sys) {
 
 void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const ThreadUse& threads,
                  const Integrator& integrator,
-                 const RunControl& control, std::size_t nFunctions, const std::vector<std::string>& pairNotes,
-                 const std::vector<std::string>& inputNotes) {
+                 const RunControl& control, std::size_t nFunctions, const DpdModel& model) {
     const std::size_t mobile = static_cast<std::size_t>(sys.sumOverRanks(static_cast<long>(sys.countMobile())));
     const std::size_t particles = static_cast<std::size_t>(sys.sumOverRanks(static_cast<long>(sys.particles.size())));
     log << "Case           : " << caseDir << "\n";
@@ -140,8 +139,9 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
         << (sys.forceParameters.weightExponent == 2.0 ? "" : ", generalised weight") << "\n"
         << "Walls          : " << sys.walls.size() << "\n";
     printWalls(log, sys);
-    for (const std::string& note : pairNotes) log << "Pair mixed     : " << note << "\n";
-    for (const std::string& note : inputNotes) log << "Note           : " << note << "\n";
+    for (const std::string& note : model.wallNotes) log << "Slip length    : " << note << "\n";
+    for (const std::string& note : model.pairNotes) log << "Pair mixed     : " << note << "\n";
+    for (const std::string& note : model.inputNotes) log << "Note           : " << note << "\n";
     if (!sys.bonds.empty())
         log << "Bonds          : " << sys.bonds.size() << " in " << sys.bonds.chainCount() << " chains, "
             << sys.bondPotential->description() << "; " << sys.bondedPairs.description() << "\n";
@@ -178,8 +178,7 @@ public:
         if (!restartForces) sys.computeForces();
         sys.dropGhosts();
         mobileParticles_ = static_cast<double>(sys.sumOverRanks(static_cast<long>(sys.countMobile())));
-        printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model.pairNotes,
-                    model.inputNotes);
+        printHeader(log_, caseDir_, sys, threads, *integrator, control, functions.size(), model);
         log_.flush();  // the set-up shows in a log file at once, not with the first report
         loop(sys, control, model, functions, *integrator);
     }

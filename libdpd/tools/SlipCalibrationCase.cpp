@@ -1,5 +1,6 @@
 #include "tools/SlipCalibrationCase.hpp"
 
+#include "case/CaseSlipCalibrations.hpp"
 #include "case/DpdProperties.hpp"
 #include "io/Dictionary.hpp"
 
@@ -8,18 +9,6 @@
 namespace dpd {
 
 namespace {
-
-// The one mobile species of the case.
-int mobileSpecies(const DpdModel& m, const Dictionary& properties) {
-    int found = -1;
-    for (int s = 0; s < m.species.size(); ++s) {
-        if (m.species[s].frozen) continue;
-        if (found >= 0) properties.fail("species", "a slip calibration's fluid is one mobile species, this case has more");
-        found = s;
-    }
-    if (found < 0) properties.fail("species", "a slip calibration needs a mobile species");
-    return found;
-}
 
 // The walls' shared model and friction (both walls: planar, tunable slip, no stripes, alike).
 const TunableSlipParameters& sharedWallModel(const DpdModel& m, const Dictionary& properties) {
@@ -44,25 +33,14 @@ const TunableSlipParameters& sharedWallModel(const DpdModel& m, const Dictionary
 }  // namespace
 
 CalibrationCase readCalibrationCase(const std::string& caseDir) {
-    namespace fs = std::filesystem;
-    const Dictionary properties = Dictionary::readFile((fs::path(caseDir) / "constant" / "dpdProperties").string());
+    const Dictionary properties =
+        Dictionary::readFile((std::filesystem::path(caseDir) / "constant" / "dpdProperties").string());
     const DpdModel m = readDpdModel(properties);
     CalibrationCase c;
-    const int fluid = mobileSpecies(m, properties);
-    const PairCoeffs& pair = m.pairs(fluid, fluid);
-    c.key.a = pair.a;
-    c.key.gamma = pair.gamma;
-    c.key.kT = m.kT;
-    c.key.cutoff = m.cutoff;
-    c.key.dimension = m.dimension;
-    c.key.integrator = makeIntegrator(m.integrator)->description();
+    c.key = slipCalibrationFluid(m, properties, caseDir);
     const TunableSlipParameters& wall = sharedWallModel(m, properties);
     c.key.setWallModel(wall);
     c.gammaL = wall.gammaL;
-    const Dictionary control = Dictionary::readFile((fs::path(caseDir) / "system" / "controlDict").string());
-    c.key.dt = control.getPositive<double>("deltaT");
-    const Dictionary builder = Dictionary::readFile((fs::path(caseDir) / "system" / "blockFrozenWallDict").string());
-    c.key.density = builder.subDict("fluid").getPositive<double>("density");
     return c;
 }
 

@@ -27,10 +27,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The fit setup of one velocity component: the user's dictionary with the component set.
-FitSlipLengthSetup componentSetup(const Dictionary& fitDict, const Dictionary& dpdProperties, int component) {
+FitSlipLengthSetup componentSetup(const Dictionary& fitDict, const Dictionary& dpdProperties, const std::string& caseDir,
+                                  int component) {
     Dictionary d = fitDict;
     d.setValue("component", std::string(axisLetter(component)));
-    FitSlipLengthSetup s = readFitSlipLengthSetup(d, dpdProperties);
+    FitSlipLengthSetup s = readFitSlipLengthSetup(d, dpdProperties, caseDir);
     s.predictTunableSlip = false;  // the uniform wall's formula says nothing of stripes
     return s;
 }
@@ -154,7 +155,8 @@ double SlipTensorResult::slipEffectiveError() const {
     return std::hypot(wallsMeanError(parallel) * c * c, wallsMeanError(perpendicular) * s * s);
 }
 
-SlipTensorResult slipTensor(const Dictionary& fitDict, const Dictionary& dpdProperties, const ProfileTableData& t,
+SlipTensorResult slipTensor(const Dictionary& fitDict, const Dictionary& dpdProperties, const std::string& caseDir,
+                            const ProfileTableData& t,
                             const std::string& samplingFile, const std::string& time) {
     if (fitDict.get<std::string>("mode") != "poiseuille")
         fitDict.fail("mode", "slipTensor fits the Poiseuille flow of each component: mode poiseuille");
@@ -166,14 +168,14 @@ SlipTensorResult slipTensor(const Dictionary& fitDict, const Dictionary& dpdProp
     r.axis = axisFromLetter(t.axisName());
     if (r.axis < 0) throw IoError(t.file + ": the first column is '" + t.axisName() + "', not a bin axis x, y or z");
 
-    const Eigen::Vector3d g = readDpdModel(dpdProperties).bodyForce->value();
+    const Eigen::Vector3d g = readDpdModel(dpdProperties, caseDir).bodyForce->value();
     const int a1 = (r.axis + 1) % 3, a2 = (r.axis + 2) % 3;
     if (g[a1] == 0.0 && g[a2] == 0.0)
         dpdProperties.fail("bodyForce", "no force in the walls' plane drives the channel");
     // One fit setup per driven in-plane axis, read once.
     std::array<std::optional<FitSlipLengthSetup>, 3> setups;
     for (int a : {a1, a2})
-        if (g[a] != 0.0) setups[a] = componentSetup(fitDict, dpdProperties, a);
+        if (g[a] != 0.0) setups[a] = componentSetup(fitDict, dpdProperties, caseDir, a);
     const FitSlipLengthSetup& first = setups[a1] ? *setups[a1] : *setups[a2];
     r.perpendicularAxis = stripesAxis(first, t, r.axis);
     if (r.perpendicularAxis == r.axis)
@@ -287,7 +289,7 @@ std::vector<SlipTensorResult> runSlipTensor(const FitSlipLengthOptions& o, std::
     for (const TimeDirectory& t : selected.times) {
         const ProfileTableData table = readProfileTable(profileTablePath(o.caseDir, t.name, profile));
         const fs::path sampling = caseDir / t.name / "sampling" / (profile + ".h5");
-        results.push_back(slipTensor(dict, props, table, sampling.string(), t.name));
+        results.push_back(slipTensor(dict, props, o.caseDir, table, sampling.string(), t.name));
         results.back().profileFile = (fs::path("postProcessing") / "profileBins" / t.name / (profile + ".dat")).string();
     }
     for (const auto& t : selected.skipped) out << "Time = " << t << ": no profile table " << profile << ".dat, skipped\n";

@@ -57,7 +57,8 @@ struct SlipTensorResult {
 
 // One profile table (with its blocks, read from `samplingFile` when it exists). InputError naming
 // fitSlipLengthDict or dpdProperties when the setup does not fit.
-SlipTensorResult slipTensor(const Dictionary& fitDict, const Dictionary& dpdProperties, const ProfileTableData& table,
+SlipTensorResult slipTensor(const Dictionary& fitDict, const Dictionary& dpdProperties, const std::string& caseDir,
+                            const ProfileTableData& table,
                             const std::string& samplingFile, const std::string& time = "");
 
 Dictionary slipTensorDictionary(const SlipTensorResult& r);

@@ -1,6 +1,7 @@
 // A planar wall read from its sub-dictionary of constant/dpdProperties' walls block.
 #include "walls/PlanarWallDictionary.hpp"
 
+#include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "walls/PlaneShape.hpp"
 #include "walls/TunableSlipLayer.hpp"
@@ -34,10 +35,13 @@ TunableSlipStripes readStripes(const Dictionary& sd, const PlanarWallSettings& w
 
 // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed;
 // friction all (default) | tangential; fluidBehind { a 25; density 3; } (optional; density 0 is none).
-TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff) {
+// A wall that asks for a slip length gives the model alone: its gammaL comes from the calibration.
+TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff, bool asksSlipLength) {
     td.checkKeys({"gammaL", "zc", "epsilon", "sigma", "stripes", "friction", "fluidBehind"});
     TunableSlipParameters t;
-    t.gammaL = td.getNonNegative<double>("gammaL");
+    if (asksSlipLength && td.found("gammaL"))
+        td.fail("gammaL", "the wall asks for a slipLength, which sets gammaL from the slip calibration: give one of the two");
+    if (!asksSlipLength) t.gammaL = td.getNonNegative<double>("gammaL");
     t.zc = td.getPositive<double>("zc");
     t.epsilon = td.getPositive<double>("epsilon");
     t.sigma = td.getPositive<double>("sigma");
@@ -56,8 +60,28 @@ TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff) {
     return t;
 }
 
+// slipLength b; (docs/walls.md 3.8): gammaL and the plane's offset behind `point` from the calibration
+// of the case's fluid and of the wall's model (its tunableSlip block).
+void resolveSlipLength(const Dictionary& wd, const WallReadContext& c, PlanarWallSettings& w) {
+    if (!w.hasTunableSlip)
+        wd.fail("slipLength", "needs the wall's model: tunableSlip { zc ...; epsilon ...; sigma ...; } (gammaL comes from "
+                              "the slip calibration)");
+    if (w.hasStripes) wd.subDict("tunableSlip").fail("stripes", "a wall that asks for a slipLength is uniform");
+    if (!c.slipLengths) wd.fail("slipLength", "is resolved against the case's slip calibration: read it with its case");
+    try {
+        const CalibratedWall chosen = c.slipLengths->resolve(w.tunableSlip, w.slipLength);
+        w.tunableSlip.gammaL = chosen.gammaL;
+        w.planeOffset = chosen.planeOffset;
+        if (c.notes) c.notes->push_back("wall " + w.name + ": " + chosen.note);
+    } catch (const InputError&) {
+        throw;  // another file's entry (the controlDict's deltaT, the builder's density) names itself
+    } catch (const std::exception& e) {
+        wd.fail("slipLength", e.what());
+    }
+}
+
 PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadContext& c) {
-    std::vector<std::string> keys{"type", "point", "normal", "velocity", "tunableSlip"};
+    std::vector<std::string> keys{"type", "point", "normal", "velocity", "tunableSlip", "slipLength"};
     for (const std::string& k : wallRuleKeys()) keys.push_back(k);
     wd.checkKeys(keys);
     PlanarWallSettings w;
@@ -70,10 +94,12 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
     w.velocity = wd.getOrDefault<Eigen::Vector3d>("velocity", Eigen::Vector3d::Zero());
     if (std::abs(w.velocity.dot(w.normal)) > 1e-12) wd.fail("velocity", "a wall can only slide in its own plane");
     if (c.dimension == 2 && w.velocity.y() != 0.0) wd.fail("velocity", "a 2-D scene lies in the x-z plane: the y component must be 0");
+    w.asksSlipLength = wd.found("slipLength");
+    if (w.asksSlipLength) w.slipLength = wd.getNonNegative<double>("slipLength");
     if (wd.found("tunableSlip")) {
         if (!wd.isDict("tunableSlip")) wd.fail("tunableSlip", "expected { gammaL ...; zc ...; epsilon ...; sigma ...; }");
         w.hasTunableSlip = true;
-        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"), c.cutoff);
+        w.tunableSlip = readTunableSlip(wd.subDict("tunableSlip"), c.cutoff, w.asksSlipLength);
         if (c.dimension == 2 && w.tunableSlip.behindDensity > 0.0)
             wd.subDict("tunableSlip").fail("fluidBehind", "is the force of a 3-D half-space of fluid; a 2-D scene has none");
         if (wd.subDict("tunableSlip").found("stripes")) {
@@ -81,6 +107,7 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
             w.stripes = readStripes(wd.subDict("tunableSlip").subDict("stripes"), w, c.dimension);
         }
     }
+    if (w.asksSlipLength) resolveSlipLength(wd, c, w);
     // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
     // since it adds no tangential friction of its own to the slip that gammaL sets.
     const std::string defaultRule = w.hasTunableSlip ? "specular" : "bounceBack";
@@ -91,7 +118,7 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
 }  // namespace
 
 std::unique_ptr<Wall> makePlanarWall(const PlanarWallSettings& settings, std::size_t index) {
-    auto wall = std::make_unique<Wall>(settings.name, std::make_shared<PlaneShape>(settings.point, settings.normal),
+    auto wall = std::make_unique<Wall>(settings.name, std::make_shared<PlaneShape>(settings.actingPoint(), settings.normal),
                                        settings.rule);
     wall->sliding(settings.velocity);
     if (settings.hasTunableSlip) {

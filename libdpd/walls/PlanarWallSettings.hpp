@@ -29,10 +29,19 @@ struct PlanarWallSettings {
     // Striped: gamma_L of the gas sectors, where it differs from tunableSlip.gammaL (the other sectors).
     bool hasStripes = false;
     TunableSlipStripes stripes;
+    // A wall that asks for a slip length (docs/walls.md 3.8): `point` is where the user put the wall,
+    // and where the flow sees it (the hydrodynamic wall); the tunable-slip plane that acts lies
+    // planeOffset behind it, its gammaL from the calibration.
+    bool asksSlipLength = false;
+    double slipLength = 0.0;
+    double planeOffset = 0.0;
 
-    // Positive on the fluid side, negative inside the solid.
+    // Where the plane that acts on the fluid passes: `point`, moved back by planeOffset.
+    Eigen::Vector3d actingPoint() const { return point - planeOffset * normal; }
+    // From the acting plane: positive on the fluid side, negative inside the solid.
     double signedDistance(double x, double y, double z) const {
-        return (x - point.x()) * normal.x() + (y - point.y()) * normal.y() + (z - point.z()) * normal.z();
+        const Eigen::Vector3d p = actingPoint();
+        return (x - p.x()) * normal.x() + (y - p.y()) * normal.y() + (z - p.z()) * normal.z();
     }
     // The axis the normal lies along, or -1 if the wall is oblique.
     int normalAxis() const;

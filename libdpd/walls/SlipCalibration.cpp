@@ -136,7 +136,16 @@ CalibratedFriction SlipCalibration::frictionFor(double b) const {
     const SlipCalibrationPoint& lo = points_[k + 1];
     const double t = (b - hi.slipLength) / (lo.slipLength - hi.slipLength);
     const double inverse = (1.0 - t) / hi.gammaL + t / lo.gammaL;
-    return {1.0 / inverse, (1.0 - t) * hi.slipLengthError + t * lo.slipLengthError};
+    return {1.0 / inverse, (1.0 - t) * hi.slipLengthError + t * lo.slipLengthError, wallOffset_};
+}
+
+CalibratedFriction SlipCalibration::wallFor(double b) const {
+    if (!(b >= 0.0 && b <= largestSlip()))
+        throw std::out_of_range("slip length " + numberText(b) + " outside the calibrated range 0 to " +
+                                numberText(largestSlip()) + " (" + source_ + ")");
+    if (b >= smallestSlip()) return frictionFor(b);
+    const SlipCalibrationPoint& stiffest = points_.back();
+    return {stiffest.gammaL, stiffest.slipLengthError, wallOffset_ - (stiffest.slipLength - b)};
 }
 
 SlipCalibration SlipCalibration::read(const Dictionary& d) {

@@ -49,6 +49,9 @@ struct SlipCalibrationPoint {
 struct CalibratedFriction {
     double gammaL = 0.0;
     double slipLengthError = 0.0;  // the calibration's error at that b (interpolated)
+    // How far behind where the user puts the wall its plane goes: the calibration's wallOffset, less
+    // the shift of a b below the calibrated range (wallFor).
+    double planeOffset = 0.0;
 };
 
 class SlipCalibration {
@@ -70,6 +73,13 @@ public:
     // that bracket b are joined by a line in 1/gamma_L. Throws std::out_of_range naming the
     // calibrated range for b outside it.
     CalibratedFriction frictionFor(double b) const;
+    // The wall for slip length b measured from where the user puts it, down to no slip (b 0): within
+    // the calibrated range, frictionFor(b) with the plane wallOffset behind. Below it, the stiffest
+    // calibrated friction, whose flow is that of a wall smallestSlip() - b further out: its plane goes
+    // that much less far behind (the Navier condition at slip b_min is, for shear and Poiseuille flow
+    // alike, the condition at slip b a distance b_min - b further from the fluid). Throws
+    // std::out_of_range for b negative or above the range.
+    CalibratedFriction wallFor(double b) const;
 
     // A calibration file: the key, wallOffset and wallOffsetError, and the lists gammaL, slipLength
     // and slipLengthError. InputError at the entry for a missing or bad one: fewer than two points,

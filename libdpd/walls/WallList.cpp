@@ -40,14 +40,14 @@ bool WallList::isInsideSolid(const Eigen::Vector3d& r) const {
 std::string WallList::thinWall(const std::vector<const PlanarWallSettings*>& planes, const Box& box, double depth) const {
     for (const PlanarWallSettings* w : planes) {
         // Probe just short of `depth` behind the plane, wrapped into the box: it must still be solid.
-        Eigen::Vector3d probe = w->point - w->normal * depth * 0.999;
+        Eigen::Vector3d probe = w->actingPoint() - w->normal * depth * 0.999;
         for (int a = 0; a < 3; ++a)
             if (box.isActiveAxis(a)) probe[a] = box.wrap(probe[a], a);
         if (!isInsideSolid(probe)) return w->name;
         // The plane itself must lie inside the box, not on a face: the solid behind a face wall
         // would be the fluid at the far side of the periodic box.
         const int axis = w->normalAxis();
-        if (axis >= 0 && (w->point[axis] <= box.lo[axis] || w->point[axis] >= box.hi[axis])) return w->name;
+        if (axis >= 0 && (w->actingPoint()[axis] <= box.lo[axis] || w->actingPoint()[axis] >= box.hi[axis])) return w->name;
     }
     return {};
 }

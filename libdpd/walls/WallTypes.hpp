@@ -3,6 +3,7 @@
 // reads its own sub-dictionary. Adding a type adds its files and one line in WallTypes.cpp.
 #include "core/Registry.hpp"
 #include "walls/PlanarWallSettings.hpp"
+#include "walls/SlipLengthResolver.hpp"
 #include "walls/Wall.hpp"
 
 #include <cstddef>
@@ -24,6 +25,10 @@ struct WallReadContext {
     // Where a planar wall leaves its settings, for the builders and post-processing that fit channels
     // between planes (null: nowhere).
     std::vector<PlanarWallSettings>* planes = nullptr;
+    // What a wall that asks for a slip length is resolved against (null: such a wall is refused), and
+    // where it says what was chosen, for the log.
+    const SlipLengthResolver* slipLengths = nullptr;
+    std::vector<std::string>* notes = nullptr;
 };
 
 using WallRegistry = Registry<Wall, const Dictionary&, const WallReadContext&>;

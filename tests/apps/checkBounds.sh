@@ -3,7 +3,8 @@
 # executables: plain numbers): tutorials/channel/tunableSlip (the slip length against the prediction
 # from the layer's density, the ideal gas's Boltzmann layer, no crossing), tutorials/channel/stripedWall (the slip tensor against the continuum
 # reference, the flux's turn, zero flux, linearity in the force, the fluid at rest),
-# tutorials/channel/slipGammaFw (the slip's rise with falling gamma_fw) and
+# tutorials/channel/slipGammaFw (the slip's rise with falling gamma_fw), tutorials/channel/slipLength
+# (the measured slip length against the asked one) and
 # tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu against the
 # fluid without walls, and the missing verdict of too few super-blocks). Each check must fail for a
 # NaN, an empty or a missing value, a standard error over its budget and a value just outside its
@@ -192,6 +193,14 @@ for what, changed in (("slip NaN", dict(bMeasured=NAN)), ("slip missing", dict(b
     expect(f"tunableSlip gamma_L 0.25: {what}", False, ts_check(ts_rows(**changed)))
 expect("tunableSlip slip just inside the prediction's bound", True,
        ts_check(ts_rows(bMeasured=13.14 - TS_BOUND + 0.01)))
+# slipLength. asked_check(checks, where, asked, measured, run error, calibration error): an asked b of
+# 1 (bound max(0.15, 10 %) = 0.15, budget 0.075) and of 5 (bound 0.5, budget 0.25) at full size.
+sl = load("slipLength", "slipLength")
+asked = lambda b: (lambda c, v, e, cal: sl.asked_check(c, f"asking {b}", b, v, e, cal))
+broken("slipLength asking 1", asked(1.0), (0.98, 0.03, 0.05), 1.0 + 0.15 + 0.001, 0.1)
+broken("slipLength asking 5", asked(5.0), (5.2, 0.1, 0.1), 5.0 - 0.5 - 0.001, 0.3)
+expect("slipLength asking 0: just inside the bound", True, lambda c: asked(0.0)(c, -0.149, 0.03, 0.05))
+expect("slipLength asking 0: calibration error NaN", False, lambda c: asked(0.0)(c, 0.0, 0.03, NAN))
 print(f"{wrong} wrong")
 EOF
 )

@@ -1,5 +1,6 @@
 // The slip-length calibration (walls/SlipCalibration.hpp): the friction for an asked b, the calibrated
 // range, the key that says which fluid and wall model a calibration holds for, and its file.
+#include "../support/ExactSlipCalibration.hpp"
 #include "../support/InputErrorOf.hpp"
 #include "core/Error.hpp"
 #include "io/Dictionary.hpp"
@@ -16,27 +17,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-SlipCalibrationKey standardFluidKey() {
-    SlipCalibrationKey k;
-    k.density = 3;
-    k.a = 25;
-    k.gamma = 4.5;
-    k.kT = 1;
-    k.dt = 0.01;
-    k.integrator = "GrootWarren lambda 0.65";
-    TunableSlipParameters wall;  // z_c 1, epsilon 1, sigma 0.5
-    wall.behindA = 25;
-    wall.behindDensity = 3;
-    k.setWallModel(wall);
-    return k;
-}
+SlipCalibrationKey standardFluidKey() { return test::standardFluidSlipKey(); }
 
-// b = 3 / gamma_L - 0.4 exactly (the form of the small-alpha prediction), at four frictions.
-SlipCalibration exactCalibration(SlipCalibrationKey key = standardFluidKey()) {
-    std::vector<SlipCalibrationPoint> points;
-    for (double g : {8.0, 0.5, 2.0, 0.25}) points.push_back({g, 3.0 / g - 0.4, 0.01 * g});
-    return SlipCalibration(key, points, 0.3, 0.02, "test");
-}
+SlipCalibration exactCalibration(SlipCalibrationKey key = standardFluidKey()) { return test::exactSlipCalibration(key); }
 
 struct TempDir {
     fs::path path = fs::temp_directory_path() / ("dpdSlipCalibration-" + std::to_string(::getpid()));
@@ -148,4 +131,30 @@ TEST(SlipCalibration, IsFoundInTheCaseOrTheCacheByItsKey) {
         EXPECT_NE(what.find(files[0].first.string() + ": fluid/a 25 against 0"), std::string::npos) << what;
         EXPECT_NE(what.find(files[1].first.string() + ": fluid/kT 1.5 against 1"), std::string::npos) << what;
     }
+}
+
+TEST(SlipCalibration, GivesSlipsBelowItsRangeByMovingTheStiffestWallOut) {
+    // The stiffest wall slips 0.2 from where it acts, 0.7 in front of its plane.
+    const std::vector<SlipCalibrationPoint> points{{0.5, 5.6, 0.05}, {2.0, 1.1, 0.02}, {16.0, 0.2, 0.1}};
+    const SlipCalibration c(standardFluidKey(), points, 0.7, 0.05, "test");
+    const CalibratedFriction inside = c.wallFor(1.1);
+    EXPECT_EQ(inside.gammaL, 2.0);
+    EXPECT_EQ(inside.planeOffset, 0.7);
+    EXPECT_EQ(inside.slipLengthError, 0.02);
+    // No slip: the stiffest friction, its plane 0.2 less far behind, so that the flow's zero lies at
+    // the user's point.
+    const CalibratedFriction noSlip = c.wallFor(0.0);
+    EXPECT_EQ(noSlip.gammaL, 16.0);
+    EXPECT_NEAR(noSlip.planeOffset, 0.5, 1e-15);
+    EXPECT_EQ(noSlip.slipLengthError, 0.1);
+    EXPECT_NEAR(c.wallFor(0.15).planeOffset, 0.65, 1e-15);
+    EXPECT_EQ(c.wallFor(0.2).planeOffset, 0.7) << "continuous at the range's end";
+    try {
+        c.wallFor(5.7);
+        FAIL() << "b beyond the calibration accepted";
+    } catch (const std::out_of_range& e) {
+        EXPECT_NE(std::string(e.what()).find("outside the calibrated range 0 to 5.6"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(c.wallFor(-0.01), std::out_of_range);
+    EXPECT_THROW(c.wallFor(std::nan("")), std::out_of_range);
 }

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
         if (!cl.parse(argc, argv)) return;
         const std::filesystem::path caseDir(cl.caseDir());
         const auto properties = dpd::Dictionary::readFile((caseDir / "constant" / "dpdProperties").string());
-        const dpd::DpdModel model = dpd::readDpdModel(properties);
+        const dpd::DpdModel model = dpd::readDpdModel(properties, cl.caseDir());
         const auto dict = dpd::Dictionary::readFile((caseDir / "system" / "randomEquilWallDict").string());
         dpd::RandomEquilWallReport r;
         const dpd::Snapshot snap = dpd::buildRandomEquilWall(dict, properties, model, cl.caseDir(), r);
