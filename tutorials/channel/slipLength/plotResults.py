@@ -156,7 +156,8 @@ def draw(rows, couette):
     label(ax[0], "asked against measured", "asked b", "measured b (from the wall's point)", 8)
     for asked_b, _, _, case in rows:
         t = read_table(latest(f"{case}/postProcessing/profileBins/*/channelProfile.dat"))
-        ax[1].plot(t["z"], t["ux"], label=f"b {asked_b:g}")
+        fluid = t["density"] > 0  # bins behind the acting planes hold no fluid and no velocity
+        ax[1].plot(t["z"][fluid], t["ux"][fluid], label=f"b {asked_b:g}")
         ax[2].plot(t["z"], t["density"] / np.mean(t["density"][central(t["z"])]), label=f"b {asked_b:g}")
     for a in ax[1:]:
         mark_walls(a, wall_planes("poiseuille/constant/dpdProperties"))
