@@ -53,6 +53,13 @@ run unknownBodyForce 'sed -i "s/type uniform;/type gravity;/" constant/dpdProper
     "constant/dpdProperties:" "bodyForce" "expected none, uniform or reversePoiseuille"
 run reverseFrameWithoutBounceForward 'sed -i "s/reflection bounceBack; }/reflection bounceBack; reverseFrame lab; }/" constant/dpdProperties' \
     "constant/dpdProperties:" "reverseFrame" "only a wall with reflection bounceForward reverses in the lab frame"
+# A wall that asks for a slip length its fluid has no calibration for (an empty cache: the user's own
+# calibrations cannot answer), or a negative one.
+export DPD_SLIP_CALIBRATIONS=$work/emptyCache
+mkdir -p "$DPD_SLIP_CALIBRATIONS"
+askSlip() { echo "sed -i '0,/reflection bounceBack; }/s//reflection bounceBack; slipLength $1; tunableSlip { zc 1; epsilon 1; sigma 0.5; } }/' constant/dpdProperties"; }
+run slipLengthWithoutCalibration "$(askSlip 1)" "constant/dpdProperties:" "slipLength" "no slip calibration" "etc/calibrateWall"
+run negativeSlipLength "$(askSlip -1)" "constant/dpdProperties:" "slipLength" "negative"
 run hugeEndTime 'sed -i "s/^endTime 0.2;/endTime 1e30;/" system/controlDict' "system/controlDict:" "endTime" "2^53"
 
 # Snapshots.
