@@ -51,8 +51,13 @@ SlipCalibrationKey slipCalibrationFluid(const DpdModel& m, const Dictionary& pro
 CaseSlipCalibrations::CaseSlipCalibrations(const DpdModel& model, const Dictionary& properties, std::string caseDir)
     : model_(model), properties_(properties), caseDir_(std::move(caseDir)) {}
 
+const SlipCalibrationKey& CaseSlipCalibrations::fluidKey() const {
+    if (!fluidKey_) fluidKey_ = slipCalibrationFluid(model_, properties_, caseDir_);
+    return *fluidKey_;
+}
+
 CalibratedWall CaseSlipCalibrations::resolve(const TunableSlipParameters& wallModel, double b) const {
-    SlipCalibrationKey key = slipCalibrationFluid(model_, properties_, caseDir_);
+    SlipCalibrationKey key = fluidKey();
     key.setWallModel(wallModel);
     SlipCalibration calibration = [&] {
         try {

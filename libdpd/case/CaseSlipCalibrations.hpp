@@ -8,6 +8,7 @@
 #include "walls/SlipCalibration.hpp"
 #include "walls/SlipLengthResolver.hpp"
 
+#include <optional>
 #include <string>
 
 namespace dpd {
@@ -28,9 +29,13 @@ public:
     CalibratedWall resolve(const TunableSlipParameters& wallModel, double slipLength) const override;
 
 private:
+    // The fluid's and step's key, read from the case's files once for all its walls.
+    const SlipCalibrationKey& fluidKey() const;
+
     const DpdModel& model_;
     const Dictionary& properties_;
     std::string caseDir_;
+    mutable std::optional<SlipCalibrationKey> fluidKey_;
 };
 
 }  // namespace dpd
