@@ -57,7 +57,7 @@ void SignedDistanceField::smoothNormals() {
     nodes_ = std::move(smoothed);
 }
 
-SurfaceDistance SignedDistanceField::at(const Eigen::Vector3d& r) const {
+int SignedDistanceField::corners(const Eigen::Vector3d& r, std::size_t* index, double* weight) const {
     // Linear weights between the two cell centres that bracket r along each varying axis.
     int i0[3], i1[3];
     double t[3];
@@ -73,21 +73,41 @@ SurfaceDistance SignedDistanceField::at(const Eigen::Vector3d& r) const {
         i0[a] = BackgroundGrid::wrapIndex(static_cast<int>(f), grid_.n[a]);
         i1[a] = i0[a] + 1 == grid_.n[a] ? 0 : i0[a] + 1;
     }
-    double d = 0.0;
-    Eigen::Vector3d n(0, 0, 0);
-    // The corners in the order x fastest; along an axis of one cell only the first (the other weighs 0).
     const int cornersY = grid_.n[1] == 1 ? 1 : 2, cornersZ = grid_.n[2] == 1 ? 1 : 2;
+    int count = 0;
     for (int cz = 0; cz < cornersZ; ++cz)
         for (int cy = 0; cy < cornersY; ++cy)
             for (int cx = 0; cx < 2; ++cx) {
                 const double w = (cx ? t[0] : 1.0 - t[0]) * (cy ? t[1] : 1.0 - t[1]) * (cz ? t[2] : 1.0 - t[2]);
                 if (w == 0.0) continue;
-                const Node& node = nodes_[grid_.index(cx ? i1[0] : i0[0], cy ? i1[1] : i0[1], cz ? i1[2] : i0[2])];
-                d += w * node.distance;
-                n += w * Eigen::Vector3d(node.normal[0], node.normal[1], node.normal[2]);
+                index[count] = grid_.index(cx ? i1[0] : i0[0], cy ? i1[1] : i0[1], cz ? i1[2] : i0[2]);
+                weight[count++] = w;
             }
+    return count;
+}
+
+SurfaceDistance SignedDistanceField::at(const Eigen::Vector3d& r) const {
+    std::size_t index[8];
+    double weight[8];
+    const int count = corners(r, index, weight);
+    double d = 0.0;
+    Eigen::Vector3d n(0, 0, 0);
+    for (int k = 0; k < count; ++k) {
+        const Node& node = nodes_[index[k]];
+        d += weight[k] * node.distance;
+        n += weight[k] * Eigen::Vector3d(node.normal[0], node.normal[1], node.normal[2]);
+    }
     const double norm = n.norm();
     return {d, norm > 0.0 ? Eigen::Vector3d(n / norm) : Eigen::Vector3d::Zero()};
+}
+
+double SignedDistanceField::distance(const Eigen::Vector3d& r) const {
+    std::size_t index[8];
+    double weight[8];
+    const int count = corners(r, index, weight);
+    double d = 0.0;
+    for (int k = 0; k < count; ++k) d += weight[k] * nodes_[index[k]].distance;
+    return d;
 }
 
 }  // namespace dpd

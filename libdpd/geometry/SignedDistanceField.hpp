@@ -28,7 +28,8 @@ public:
 
     // Distance (positive in the fluid) and unit normal into the fluid at a box point.
     SurfaceDistance at(const Eigen::Vector3d& r) const;
-    double distance(const Eigen::Vector3d& r) const { return at(r).distance; }
+    // The distance alone (the same number as at(r).distance, without the normal's cost).
+    double distance(const Eigen::Vector3d& r) const;
 
     // The distance tabulated at a grid cell's centre (BackgroundGrid::index).
     float tabulatedDistance(std::size_t cell) const { return nodes_[cell].distance; }
@@ -36,6 +37,9 @@ public:
     double band() const { return band_; }
 
 private:
+    // The corners of the grid cell r interpolates in (x fastest; along an axis of one cell only the
+    // first) and their weights, the number of corners returned.
+    int corners(const Eigen::Vector3d& r, std::size_t* index, double* weight) const;
     // The distance's central-difference gradient at a cell centre; reliable is false when a
     // neighbour is clipped to the band.
     Eigen::Vector3d distanceGradient(const std::array<int, 3>& ijk, bool& reliable) const;

@@ -29,16 +29,13 @@ double probeSpacingOf(const BackgroundGrid& g) {
     return spacing == 0.0 ? 0.5 * g.spacing.minCoeff() : spacing;
 }
 
-// The step the clearance covers: a tenth of a cutoff (the band is two). At dt 0.04 and kT 1 a particle
-// moves 0.04 along an axis in a step on average; the few that move further are looked at one by one.
-constexpr double kClearedStepInBands = 0.05;
 
 }  // namespace
 
 GeometryShape::GeometryShape(SignedDistanceField field)
     : field_(std::make_shared<const SignedDistanceField>(std::move(field))),
       probeSpacing_(probeSpacingOf(field_->grid())),
-      clearance_(std::make_shared<const DistanceClearance>(*field_, kClearedStepInBands * field_->band())) {}
+      clearance_(std::make_shared<const DistanceClearance>(*field_)) {}
 
 GeometryShape::GeometryShape(std::shared_ptr<const Dictionary> geometryDict) : geometryDict_(std::move(geometryDict)) {}
 
@@ -86,22 +83,31 @@ void GeometryShape::recordPositions(const Particles& p, const std::vector<std::u
     }
 }
 
-void GeometryShape::markWithin(const Particles& p, long begin, long end, double reach, std::uint8_t* near) const {
+void GeometryShape::markWithin(const Particles& p, long begin, long end, double reach,
+                               const std::vector<std::uint8_t>& frozenOfSpecies, std::uint8_t* near) const {
     const Eigen::Vector3d& span = clearance_->span();
     // The interpolated distance is a weighted mean of the table's: rounding may take it a few ulps
     // below their least.
     const double clear = reach + 1e-9 * (1.0 + std::abs(reach));
     for (long i = begin; i < end; ++i) {
         const std::size_t k = static_cast<std::size_t>(i);
+        if (frozenOfSpecies[p.species[k]]) {  // a third of a porous box's particles, all near the surface
+            near[i - begin] = 0;
+            continue;
+        }
         const Eigen::Vector3d r(p.rx[k], p.ry[k], p.rz[k]);
-        const bool shortStep = startInOrder(p, k) && std::abs(r.x() - startX_[k]) <= span.x() &&
-                               std::abs(r.y() - startY_[k]) <= span.y() && std::abs(r.z() - startZ_[k]) <= span.z();
-        near[i - begin] = !(shortStep && clearance_->clearanceAt(r) > clear);
+        if (!startInOrder(p, k)) {
+            near[i - begin] = 1;
+            continue;
+        }
+        const Eigen::Vector3d start(startX_[k], startY_[k], startZ_[k]);
+        const bool shortStep = std::abs(r.x() - start.x()) <= span.x() && std::abs(r.y() - start.y()) <= span.y() &&
+                               std::abs(r.z() - start.z()) <= span.z();
+        near[i - begin] = !(shortStep && clearance_->clearanceAlong(start, r) > clear);
     }
 }
 
-GeometryShape::Entry GeometryShape::findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta,
-                                              SurfaceDistance& atEnd) const {
+GeometryShape::Entry GeometryShape::findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta) const {
     // Probes at equal fractions of the path, the last one at its end; a step shorter than the probe
     // spacing (the usual case) costs one lookup.
     const SignedDistanceField& f = field();
@@ -110,15 +116,17 @@ GeometryShape::Entry GeometryShape::findEntry(const Eigen::Vector3d& from, const
     entry.fluidPoint = from;
     for (int k = 1; k <= probes; ++k) {
         const Eigen::Vector3d r = from + (static_cast<double>(k) / probes) * delta;
-        const SurfaceDistance s = f.at(r);
-        if (k == probes) atEnd = s;
-        if (s.distance < 0.0) {
+        const double d = f.distance(r);
+        if (k == probes) {
+            entry.lastProbe = r;
+            entry.distanceAtEnd = d;
+        }
+        if (d < 0.0) {
             entry.found = true;
-            if (k == 1) entry.atFluidPoint = f.at(from);
+            entry.atFluidPoint = f.at(entry.fluidPoint);
             return entry;
         }
         entry.fluidPoint = r;
-        entry.atFluidPoint = s;
     }
     return entry;
 }
@@ -133,18 +141,20 @@ Eigen::Vector3d GeometryShape::returnPoint(const Entry& entry, const Eigen::Vect
     // solid or behind another part of it: the last point of the path still in the fluid is safe.
     // (A particle that started the step inside, which only a failure leaves, is just mirrored.)
     const bool cameFromFluid = entry.atFluidPoint.distance >= 0.0;
-    SurfaceDistance unused;
-    if (cameFromFluid && (n.squaredNorm() == 0.0 ||
-                          findEntry(entry.fluidPoint, minimumImage(back - entry.fluidPoint, box), unused).found))
+    if (cameFromFluid && (n.squaredNorm() == 0.0 || findEntry(entry.fluidPoint, minimumImage(back - entry.fluidPoint, box)).found))
         return entry.fluidPoint;
     return back;
 }
 
-ShapeCrossing GeometryShape::crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const {
+ShapeCrossing GeometryShape::crossing(const Particles& p, std::size_t i, const Box& box, double normalWithin,
+                                      SurfaceDistance& atEnd) const {
     const Eigen::Vector3d end(p.rx[i], p.ry[i], p.rz[i]);
     const Eigen::Vector3d start = startInOrder(p, i) ? Eigen::Vector3d(startX_[i], startY_[i], startZ_[i]) : end;
-    const Entry entry = findEntry(start, minimumImage(end - start, box), atEnd);
-    if (!entry.found) return {};
+    const Entry entry = findEntry(start, minimumImage(end - start, box));
+    if (!entry.found) {
+        atEnd = entry.distanceAtEnd < normalWithin ? field().at(entry.lastProbe) : SurfaceDistance{entry.distanceAtEnd, {0, 0, 0}};
+        return {};
+    }
     return {true, returnPoint(entry, end, box), entry.atFluidPoint.normal};
 }
 

@@ -31,10 +31,14 @@ public:
     std::string description() const override;
     double signedDistance(const Eigen::Vector3d& r) const override { return field().distance(r); }
     SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return field().at(r); }
-    // A particle is near unless its step's start is known, the step is short and the clearance around
-    // where it ends exceeds the reach: one lookup in a small table for most particles.
-    void markWithin(const Particles& p, long begin, long end, double reach, std::uint8_t* near) const override;
-    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const override;
+    // A particle is near unless it is frozen, or its step's start is known, the step is short and the
+    // clearance around where it ends exceeds the reach: one lookup in a small table for most particles.
+    void markWithin(const Particles& p, long begin, long end, double reach, const std::vector<std::uint8_t>& frozenOfSpecies,
+                    std::uint8_t* near) const override;
+    // The path probed by distance alone; the normals looked up only where the step entered the solid
+    // or ends within normalWithin.
+    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, double normalWithin,
+                           SurfaceDistance& atEnd) const override;
     // Remembers where every particle stands, in the particles' order, read straight through by the
     // next step's reflections (System records again after any reorder outside a step). A particle
     // whose id differs there has no known start: its path is taken to be its end point.
@@ -50,10 +54,12 @@ private:
     struct Entry {
         bool found = false;
         Eigen::Vector3d fluidPoint{0, 0, 0};  // last probe on the path still in the fluid
-        SurfaceDistance atFluidPoint;
+        SurfaceDistance atFluidPoint;         // (with its normal only where the path entered)
+        Eigen::Vector3d lastProbe{0, 0, 0};   // the path's end as probed
+        double distanceAtEnd = 0.0;           // there (where the path did not enter before it)
     };
     // Where the path from `from` by `delta` first enters the solid, if it does.
-    Entry findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta, SurfaceDistance& atEnd) const;
+    Entry findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta) const;
     // Whether the ordered copy holds particle i's start.
     bool startInOrder(const Particles& p, std::size_t i) const { return i < startId_.size() && startId_[i] == p.id[i]; }
     // Where a particle whose path entered the solid at `entry` and ended at `end` goes back.

@@ -7,14 +7,16 @@
 
 namespace dpd {
 
-void PlaneShape::markWithin(const Particles& p, long begin, long end, double reach, std::uint8_t* near) const {
+void PlaneShape::markWithin(const Particles& p, long begin, long end, double reach, const std::vector<std::uint8_t>&,
+                            std::uint8_t* near) const {
+    // Frozen particles are marked too: a species lookup would cost the plane's vectorised test more than it saves.
     const double* rx = p.rx.data() + begin;
     const double* ry = p.ry.data() + begin;
     const double* rz = p.rz.data() + begin;
     for (long k = 0; k < end - begin; ++k) near[k] = signedDistance(rx[k], ry[k], rz[k]) < reach;
 }
 
-ShapeCrossing PlaneShape::crossing(const Particles& p, std::size_t i, const Box&, SurfaceDistance& atEnd) const {
+ShapeCrossing PlaneShape::crossing(const Particles& p, std::size_t i, const Box&, double, SurfaceDistance& atEnd) const {
     const Eigen::Vector3d r(p.rx[i], p.ry[i], p.rz[i]);
     const double depth = signedDistance(p.rx[i], p.ry[i], p.rz[i]);
     atEnd = {depth, normal_};

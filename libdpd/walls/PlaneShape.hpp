@@ -15,8 +15,10 @@ public:
     double signedDistance(const Eigen::Vector3d& r) const override { return signedDistance(r.x(), r.y(), r.z()); }
     SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return {signedDistance(r), normal_}; }
     // A test the compiler vectorises (few particles are near the plane).
-    void markWithin(const Particles& p, long begin, long end, double reach, std::uint8_t* near) const override;
-    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const override;
+    void markWithin(const Particles& p, long begin, long end, double reach, const std::vector<std::uint8_t>& frozenOfSpecies,
+                    std::uint8_t* near) const override;
+    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, double normalWithin,
+                           SurfaceDistance& atEnd) const override;
     bool returnsAlong(int axis) const override { return normal_[axis] != 0.0; }
     Eigen::Vector3d placed(const Eigen::Vector3d& back, const Box& box) const override;
     void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;

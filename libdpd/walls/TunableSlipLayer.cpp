@@ -56,8 +56,7 @@ void TunableSlipLayer::addForces(WallStep& s, const WallShape& shape, const Eige
     const bool threeD = s.box.isActiveAxis(1);
     Particles& p = s.particles;
     // Particle by particle only where the shape marks one within the wall's reach (WallBlocks.hpp).
-    forParticlesNear(shape, p, reach, [&](std::size_t i, WallCount&) {
-        if (s.frozenOfSpecies[p.species[i]]) return;
+    forParticlesNear(shape, p, s.frozenOfSpecies, reach, [&](std::size_t i, WallCount&) {
         const SurfaceDistance at = shape.surfaceAt({p.rx[i], p.ry[i], p.rz[i]});
         const double z = at.distance;
         if (!(z > 0.0) || z >= reach) return;

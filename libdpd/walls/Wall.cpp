@@ -76,7 +76,7 @@ void Wall::addForces(WallStep& s) const {
 void Wall::reflectParticle(WallStep& s, std::uint32_t index, std::size_t i, WallCount& counts) const {
     Particles& p = s.particles;
     SurfaceDistance atEnd;
-    const ShapeCrossing c = shape_->crossing(p, i, s.box, atEnd);
+    const ShapeCrossing c = shape_->crossing(p, i, s.box, layer_, atEnd);
     if (!c.found && !(atEnd.distance < layer_)) return;  // the usual case: nothing to do
     const RuleDraw draw{s.box, s.random, s.step, p.id[i], s.kT, stream_};
     if (c.found) {
@@ -107,11 +107,8 @@ void Wall::reflectParticle(WallStep& s, std::uint32_t index, std::size_t i, Wall
 }
 
 WallCount Wall::reflect(WallStep& s, std::uint32_t index) const {
-    const Particles& p = s.particles;
-    const std::vector<std::uint8_t>& frozen = s.frozenOfSpecies;
-    return forParticlesNear(*shape_, p, layer_, [&](std::size_t i, WallCount& counts) {
-        if (!frozen[p.species[i]]) reflectParticle(s, index, i, counts);
-    });
+    return forParticlesNear(*shape_, s.particles, s.frozenOfSpecies, layer_,
+                            [&](std::size_t i, WallCount& counts) { reflectParticle(s, index, i, counts); });
 }
 
 void Wall::completeCrossing(Particles& p, std::size_t i, const DeferredCrossing& d, const Box& box) const {

@@ -42,13 +42,17 @@ public:
     virtual SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const = 0;
     // For particles begin..end, whether each may lie less than `reach` in front of the surface or
     // behind it, or have stepped through such a place (near[i - begin]): passes over the particles
-    // look one by one only at those.
-    virtual void markWithin(const Particles&, long begin, long end, double /*reach*/, std::uint8_t* near) const {
+    // look one by one only at those. A shape may mark the particles of frozen species
+    // (frozenOfSpecies[s] != 0) as not near without looking: no pass acts on them.
+    virtual void markWithin(const Particles&, long begin, long end, double /*reach*/,
+                            const std::vector<std::uint8_t>& /*frozenOfSpecies*/, std::uint8_t* near) const {
         std::fill(near, near + (end - begin), std::uint8_t{1});
     }
-    // Whether particle i's step (ending where it stands) entered the solid, and where it goes back;
-    // atEnd receives the surface distance where the step ends.
-    virtual ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, SurfaceDistance& atEnd) const = 0;
+    // Whether particle i's step (ending where it stands) entered the solid, and where it goes back.
+    // Where it did not, atEnd receives the surface distance where the step ends, with the normal there
+    // where that distance is below normalWithin (a shape whose normal costs a lookup leaves it zero beyond).
+    virtual ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& box, double normalWithin,
+                                   SurfaceDistance& atEnd) const = 0;
     // Whether returning a particle can move it along the axis (a plane: only along its normal).
     virtual bool returnsAlong(int /*axis*/) const { return true; }
     // The position a returned particle is put at (a plane wraps its mirror image into the box at once).

@@ -18,7 +18,7 @@ using namespace dpd;
 
 namespace {
 
-constexpr double kBand = 2.0, kSpacing = 0.1, kSpan = 0.1;
+constexpr double kBand = 2.0, kSpacing = 0.1;
 
 // A 3-D box 12 x 3 x 12 with two grains extruded along y: a disc of radius 3 in the middle and one of
 // radius 1.5 across the periodic edge at x = 12, pixels of 0.1.
@@ -45,28 +45,30 @@ protected:
     }
 };
 
-TEST_F(TwoGrains, NoPointWithinTheSpanOfAPointLiesCloserToTheSurfaceThanItsClearance) {
-    const DistanceClearance clearance(field, kSpan);
-    EXPECT_GE(clearance.span().x(), kSpan * (1.0 - 1e-6));
+TEST_F(TwoGrains, NoPointOfAPathLiesCloserToTheSurfaceThanItsClearance) {
+    const DistanceClearance clearance(field);
+    EXPECT_GE(clearance.span().x(), 2.0 * kSpacing * (1.0 - 1e-6));
     EXPECT_TRUE(std::isinf(clearance.span().y())) << "the grains do not vary along y";
     std::mt19937 gen(3);
     std::uniform_real_distribution<double> u(0.0, 1.0), step(-1.0, 1.0);
     long tight = 0, checked = 0;
     for (int k = 0; k < 20000; ++k) {
-        // Points over the whole box and a little outside it (a moved particle before wrapping).
-        const Eigen::Vector3d x(-0.2 + 12.4 * u(gen), 3.0 * u(gen), -0.2 + 12.4 * u(gen));
-        const double bound = clearance.clearanceAt(x);
-        for (int m = 0; m < 8; ++m) {
-            const Eigen::Vector3d y =
-                x + Eigen::Vector3d(clearance.span().x() * step(gen), 2.0 * step(gen), clearance.span().z() * step(gen));
-            ASSERT_GE(field.distance(y), bound) << "x (" << x.transpose() << "), y (" << y.transpose() << ")";
+        // Paths starting over the whole box and a little outside it (a moved particle before
+        // wrapping), of every length the span allows along each axis (any along y).
+        const Eigen::Vector3d from(-0.2 + 12.4 * u(gen), 3.0 * u(gen), -0.2 + 12.4 * u(gen));
+        const Eigen::Vector3d to =
+            from + Eigen::Vector3d(clearance.span().x() * step(gen), 2.0 * step(gen), clearance.span().z() * step(gen));
+        const double bound = clearance.clearanceAlong(from, to);
+        for (int m = 0; m <= 16; ++m) {
+            const Eigen::Vector3d x = from + (m / 16.0) * (to - from);
+            ASSERT_GE(field.distance(x), bound) << "from (" << from.transpose() << ") to (" << to.transpose() << ")";
         }
-        // Useful: away from the surface, within the window's reach (m + 2 cells diagonally) and a step
-        // of the bound of the truth.
-        const double d = field.distance(x);
+        // Useful: away from the surface, the bound within the two cells the path and its interpolation
+        // span (diagonally) and a step of the bound of the path's nearer end.
+        const double d = std::min(field.distance(from), field.distance(to));
         if (d > 0.5 && d < kBand - 0.5) {
             ++checked;
-            if (bound >= d - 3.0 * kSpacing * std::sqrt(2.0) - kBand / 254.0) ++tight;
+            if (bound >= d - 2.0 * kSpacing * std::sqrt(2.0) - kBand / 254.0) ++tight;
         }
     }
     ASSERT_GT(checked, 3000);
@@ -80,8 +82,9 @@ public:
     explicit EveryParticleNear(std::shared_ptr<GeometryShape> s) : s_(std::move(s)) {}
     double signedDistance(const Eigen::Vector3d& r) const override { return s_->signedDistance(r); }
     SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return s_->surfaceAt(r); }
-    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& b, SurfaceDistance& atEnd) const override {
-        return s_->crossing(p, i, b, atEnd);
+    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box& b, double normalWithin,
+                           SurfaceDistance& atEnd) const override {
+        return s_->crossing(p, i, b, normalWithin, atEnd);
     }
     void recordPositions(const Particles& p, const std::vector<std::uint8_t>& f) override { s_->recordPositions(p, f); }
     void markFlowAxes(const Box& b, std::array<bool, 3>& v) const override { s_->markFlowAxes(b, v); }
@@ -116,7 +119,7 @@ TEST_F(TwoGrains, TheWallReturnsExactlyTheParticlesItWouldReturnLookingAtEveryOn
     long marked = 0;
     for (long c = 0; c < static_cast<long>(p.size()); c += kWallChunk) {
         const long end = std::min<long>(c + kWallChunk, static_cast<long>(p.size()));
-        shape->markWithin(p, c, end, 0.1, near);
+        shape->markWithin(p, c, end, 0.1, mobile, near);
         for (long i = c; i < end; ++i) marked += near[i - c];
     }
     const PairRandom random(11);
@@ -139,3 +142,48 @@ TEST_F(TwoGrains, TheWallReturnsExactlyTheParticlesItWouldReturnLookingAtEveryOn
 }
 
 }  // namespace
+
+TEST_F(TwoGrains, TheDistanceAloneIsTheFullLookupsDistanceToTheBit) {
+    // The wall's path probes read the distance alone (GeometryShape::findEntry): the same number.
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int k = 0; k < 20000; ++k) {
+        const Eigen::Vector3d x(-0.2 + 12.4 * u(gen), 3.0 * u(gen), -0.2 + 12.4 * u(gen));
+        ASSERT_EQ(field.distance(x), field.at(x).distance) << "x (" << x.transpose() << ")";
+    }
+}
+
+TEST_F(TwoGrains, FrozenParticlesInTheGrainsAreNeitherMarkedNorMoved) {
+    // Species 1 frozen, set in the grains and given velocities into them: a wall that visited them
+    // would find every one's path in the solid.
+    const std::vector<std::uint8_t> frozen{0, 1};
+    auto shape = std::make_shared<GeometryShape>(field);
+    const Wall wall("grains", shape, test::ruleNamed("bounceLayer", 0.1));
+    Particles p;
+    std::mt19937 gen(9);
+    std::uniform_real_distribution<double> u(0.0, 1.0), v(-1.0, 1.0);
+    while (p.size() < 2000) {
+        const Eigen::Vector3d r(12.0 * u(gen), 3.0 * u(gen), 12.0 * u(gen));
+        if (field.distance(r) < 0.0) p.add(p.size(), 1, r.x(), r.y(), r.z(), 0.1 * v(gen), 0.1 * v(gen), 0.1 * v(gen));
+    }
+    shape->recordPositions(p, frozen);
+    const Particles before = p;
+    std::uint8_t near[kWallChunk];
+    long marked = 0;
+    for (long c = 0; c < static_cast<long>(p.size()); c += kWallChunk) {
+        const long end = std::min<long>(c + kWallChunk, static_cast<long>(p.size()));
+        shape->markWithin(p, c, end, 0.1, frozen, near);
+        for (long i = c; i < end; ++i) marked += near[i - c];
+    }
+    EXPECT_EQ(marked, 0);
+    const PairRandom random(11);
+    std::vector<DeferredCrossing> deferred;
+    WallStep step{p, frozen, box, random, 4, 1.0, 0.01, deferred, {}};
+    const WallCount counts = wall.reflect(step, 0);
+    EXPECT_EQ(counts.crossed, 0);
+    EXPECT_EQ(counts.returned, 0);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        ASSERT_EQ(p.rx[i], before.rx[i]) << i;
+        ASSERT_EQ(p.vx[i], before.vx[i]) << i;
+    }
+}

@@ -31,7 +31,7 @@ public:
     SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override {
         return {signedDistance(r), (r - centre_).normalized()};
     }
-    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box&, SurfaceDistance& atEnd) const override {
+    ShapeCrossing crossing(const Particles& p, std::size_t i, const Box&, double, SurfaceDistance& atEnd) const override {
         calls_.push_back("reflect");
         const Eigen::Vector3d r(p.rx[i], p.ry[i], p.rz[i]);
         atEnd = surfaceAt(r);
