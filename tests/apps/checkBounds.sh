@@ -2,7 +2,8 @@
 # Issue 45's rule on broken inputs, on the check functions of four tutorials (no simulation, no
 # executables: plain numbers): tutorials/channel/tunableSlip (the slip length against the prediction
 # from the layer's density, the ideal gas's Boltzmann layer, no crossing), tutorials/channel/stripedWall (the slip tensor against the continuum
-# reference, the flux's turn, zero flux, linearity in the force, the fluid at rest),
+# reference, the flux's turn, zero flux, linearity in the force, the fluid at rest; its calibration's
+# fall of b with gamma_L),
 # tutorials/channel/slipGammaFw (the slip's rise with falling gamma_fw), tutorials/channel/slipLength
 # (the measured slip length against the asked one) and
 # tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu against the
@@ -28,13 +29,13 @@ from dpdfoam.checks import Checks
 src, NAN = sys.argv[1], float("nan")
 
 
-def load(name, case):
-    """A tutorial's plotResults.py as module `name`, its directory on sys.path while it loads (the
-    lattice-wall script imports wallComparison beside it)."""
+def load(name, case, script="plotResults.py"):
+    """A tutorial's script (plotResults.py unless said) as module `name`, its directory on sys.path
+    while it loads (the lattice-wall script imports wallComparison beside it)."""
     directory = f"{src}/tutorials/channel/{case}"
     sys.path.insert(0, directory)
     try:
-        spec = importlib.util.spec_from_file_location(name, f"{directory}/plotResults.py")
+        spec = importlib.util.spec_from_file_location(name, f"{directory}/{script}")
         module = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(module)
     finally:
@@ -44,6 +45,7 @@ def load(name, case):
 
 sw, sg, lw = load("stripedWall", "stripedWall"), load("slipGammaFw", "slipGammaFw"), load("latticeWall", "poiseuille/latticeWall")
 ts = load("tunableSlip", "tunableSlip")
+sc = load("stripedCalibration", "stripedWall", "calibrate.py")
 wc = sys.modules["wallComparison"]
 wrong = 0
 
@@ -144,6 +146,42 @@ expect("slipGammaFw 2-D: a step down just beyond 3 budgets", False,
        mono("2-D", [0.4850, 0.4399, 0.4399 + 3 * step + 0.001, 0.2828], two_e))
 expect("slipGammaFw 2-D: the rise just short of 3 budgets", False,
        mono("2-D", [0.2828 + 3 * rise - 0.001, 0.30, 0.29, 0.2828], two_e))
+
+# stripedWall/calibrate.py. rise_checks(checks, gammas, b, err, test): the full-size calibration of the
+# README (2026-11-27), then broken: a NaN or missing b or error, an error over its budget, b at the
+# stiffest gamma_L just beyond (and just within) 3 budgets above the one before, a sweep of one gamma_L.
+CG = [0.05, 0.1, 0.2, 0.5, 1, 2, 4, 8, 16]
+CB = [48.31, 25.26, 11.83, 4.66, 2.52, 1.23, 0.66, 0.30, 0.16]
+CE = [6.36, 1.21, 0.42, 0.19, 0.14, 0.12, 0.12, 0.10, 0.10]
+
+
+def replaced(values, k, value):
+    return values[:k] + [value] + values[k + 1:]
+
+
+def rise_bound(b_lo):
+    """The stiffer b whose step from b_lo is exactly -3 budgets (bisection: the budget grows with b)."""
+    lo, hi = b_lo, b_lo + 100.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        budget = (sc.slip_budget(b_lo, False) ** 2 + sc.slip_budget(mid, False) ** 2) ** 0.5
+        lo, hi = (mid, hi) if b_lo - mid > -3 * budget else (lo, mid)
+    return lo
+
+
+rise = sc.rise_checks
+expect("stripedWall calibration: b falls with gamma_L (full size)", True, lambda c: rise(c, CG, CB, CE, False))
+expect("stripedWall calibration: the same at the test's budgets", True, lambda c: rise(c, CG, CB, CE, True))
+for name, value in (("NaN", NAN), ("missing", None)):
+    expect(f"stripedWall calibration: b {name}", False, lambda c: rise(c, CG, replaced(CB, 4, value), CE, False))
+    expect(f"stripedWall calibration: error {name}", False, lambda c: rise(c, CG, CB, replaced(CE, 5, value), False))
+expect("stripedWall calibration: error over its budget", False, lambda c: rise(c, CG, CB, replaced(CE, 0, 30.0), False))
+edge = rise_bound(CB[7])
+expect("stripedWall calibration: b rises just beyond 3 budgets", False,
+       lambda c: rise(c, CG, replaced(CB, 8, edge + 0.001), CE, False))
+expect("stripedWall calibration: b rises just within 3 budgets", True,
+       lambda c: rise(c, CG, replaced(CB, 8, edge - 0.001), CE, False))
+expect("stripedWall calibration: one gamma_L", False, lambda c: rise(c, CG[:1], CB[:1], CE[:1], False))
 
 # latticeWall. agreement_check(checks, name, a, b, difference, its error, budget); no_slip_check and
 # nu_check; wall_pairs with a run of too few super-blocks.

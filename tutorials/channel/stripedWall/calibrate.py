@@ -35,6 +35,21 @@ def slip_budget(b, test):
     return B_SHARE * abs(b) + B_FLOOR[test]
 
 
+def rise_checks(checks, gammas, b, err, test):
+    """From each gamma_L to the next stiffer one the slip length must not rise decisively: the step
+    b(softer) - b(stiffer) no lower than -3 budgets, its standard error below one (slip_budget of both
+    ends in quadrature). A sweep of fewer than two gamma_L fails."""
+    gammas, b, err = (np.asarray(v, dtype=float) for v in (gammas, b, err))
+    order = np.argsort(gammas)
+    if len(order) < 2:
+        checks.fail(f"the calibration sweeps at least two gamma_L ({len(order)} here)")
+    for lo, hi in zip(order[:-1], order[1:]):
+        step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
+        budget = math.hypot(slip_budget(b[lo], test), slip_budget(b[hi], test))
+        checks.bounded(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g} (standard "
+                       f"error below {budget:.3g})", step, se, budget, -3 * budget, None)
+
+
 def arguments():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("-period", type=float, default=10.0, help="the stripes' period L")
@@ -70,12 +85,8 @@ def main():
     b, err = hw["slipLength"], hw["slipLengthError"]
     span = f"b from {b.min():.3f} to {b.max():.3f}"
     checks = Checks()
+    rise_checks(checks, gammas, b, err, test)
     order = np.argsort(gammas)
-    for lo, hi in zip(order[:-1], order[1:]):
-        step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
-        budget = math.hypot(slip_budget(b[lo], test), slip_budget(b[hi], test))
-        checks.bounded(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g} (standard "
-                       f"error below {budget:.3g})", step, se, budget, -3 * budget, None)
     picks = {}
     found = friction_for_slip(slip_target, gammas, b, err)
     checks.add(f"the sweep brackets b = {slip_target:g} (gammaGas)", found is not None, span)
