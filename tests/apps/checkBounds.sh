@@ -1,16 +1,16 @@
 #!/bin/bash
-# Issue 45's rule on broken inputs, on the check functions of four tutorials (no simulation, no
+# Issue 45's rule on broken inputs, on the check functions of these tutorials (no simulation, no
 # executables: plain numbers): tutorials/channel/tunableSlip (the slip length against the prediction
-# from the layer's density, the ideal gas's Boltzmann layer, no crossing), tutorials/channel/stripedWall (the slip tensor against the continuum
-# reference, the flux's turn, zero flux, linearity in the force, the fluid at rest; its calibration's
-# fall of b with gamma_L),
-# tutorials/channel/slipGammaFw (the slip's rise with falling gamma_fw), tutorials/channel/slipLength
-# (the measured slip length against the asked one) and
-# tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu against the
-# fluid without walls, and the missing verdict of too few super-blocks). Each check must fail for a
-# NaN, an empty or a missing value, a standard error over its budget and a value just outside its
-# fixed bound (which a standard error within budget no longer widens), and pass for a good value: the
-# full-size numbers the tutorials' READMEs record, at the full-size budgets.
+# from the layer's density, the ideal gas's Boltzmann layer, no crossing), tutorials/channel/stripedWall
+# (the slip tensor against the continuum reference, the flux's turn, zero flux, linearity in the force,
+# the fluid at rest; its calibration's fall of b with gamma_L), tutorials/channel/slipGammaFw (the
+# slip's rise with falling gamma_fw), tutorials/channel/slipLength (the measured slip length against
+# the asked one), tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu
+# against the fluid without walls, and the missing verdict of too few super-blocks) and
+# tutorials/benchmarks/speedAccuracy (each scheme's errors at its smallest step, the blow-up). Each
+# check must fail for a NaN, an empty or a missing value, a standard error over its budget and a value
+# just outside its fixed bound (which a standard error within budget no longer widens), and pass for a
+# good value: the full-size numbers the tutorials' READMEs record, at the full-size budgets.
 #   $1: the directory of the executables (unused), $2: the source directory
 set -u
 src=$2
@@ -29,10 +29,10 @@ from dpdfoam.checks import Checks
 src, NAN = sys.argv[1], float("nan")
 
 
-def load(name, case, script="plotResults.py"):
+def load(name, case, script="plotResults.py", group="channel"):
     """A tutorial's script (plotResults.py unless said) as module `name`, its directory on sys.path
     while it loads (the lattice-wall script imports wallComparison beside it)."""
-    directory = f"{src}/tutorials/channel/{case}"
+    directory = f"{src}/tutorials/{group}/{case}"
     sys.path.insert(0, directory)
     try:
         spec = importlib.util.spec_from_file_location(name, f"{directory}/{script}")
@@ -46,6 +46,7 @@ def load(name, case, script="plotResults.py"):
 sw, sg, lw = load("stripedWall", "stripedWall"), load("slipGammaFw", "slipGammaFw"), load("latticeWall", "poiseuille/latticeWall")
 ts = load("tunableSlip", "tunableSlip")
 sc = load("stripedCalibration", "stripedWall", "calibrate.py")
+sa = load("speedAccuracy", "speedAccuracy", group="benchmarks")
 wc = sys.modules["wallComparison"]
 wrong = 0
 
@@ -182,6 +183,45 @@ expect("stripedWall calibration: b rises just beyond 3 budgets", False,
 expect("stripedWall calibration: b rises just within 3 budgets", True,
        lambda c: rise(c, CG, replaced(CB, 8, edge - 0.001), CE, False))
 expect("stripedWall calibration: one gamma_L", False, lambda c: rise(c, CG[:1], CB[:1], CE[:1], False))
+
+# speedAccuracy. checks(rows, reference, test): each Verlet-type scheme at its smallest step (standard
+# errors within budget, kT and pressure within 5 % and nu within 10 % plus 4 budgets) and stopped at a
+# step of 0.15 or more. Good: two schemes with standard errors in the ranges the full study measured
+# (plotResults.py's BUDGETS comment) and errors of the same size.
+
+
+def study(**changes):
+    """Rows of two schemes at dt 0.005 (stable) and 0.15 (stopped); changes: column -> value of DPD-VV's
+    smallest step, and stable=True: the largest steps' runs not stopped."""
+    rows = {}
+    for name in ("GrootWarren0.65", "DPD-VV"):
+        small = {"dt": 0.005, "unstable": False, "kT": 0.004, "kTse": 0.003, "P": 0.001, "Pse": 0.0006,
+                 "nu": 0.03, "nuse": 0.05, "cost": 1e-6}
+        rows[name] = [small, dict(small, dt=0.15, unstable=not changes.get("stable", False))]
+    for key, value in changes.items():
+        if key != "stable":
+            rows["DPD-VV"][0][key] = value
+    return rows
+
+
+REF = ("GrootWarren0.65", 0.0025, 23.6, 0.01, 0.28, 0.005)
+expect("speedAccuracy: the full study's numbers", True, lambda c: c.rows.extend(sa.checks(study(), REF, False).rows))
+expect("speedAccuracy: the same in test mode", True, lambda c: c.rows.extend(sa.checks(study(), REF, True).rows))
+for q, value in (("nu", NAN), ("nuse", NAN), ("kT", NAN), ("Pse", NAN)):
+    expect(f"speedAccuracy: {q} NaN", False, lambda c: c.rows.extend(sa.checks(study(**{q: value}), REF, False).rows))
+expect("speedAccuracy: nu's error over its budget", False,
+       lambda c: c.rows.extend(sa.checks(study(nuse=0.09), REF, False).rows))
+bound = sa.LEVELS["kT"] + 4 * sa.BUDGETS[False]["kT"]
+expect("speedAccuracy: kT just beyond its bound", False,
+       lambda c: c.rows.extend(sa.checks(study(kT=bound + 0.001), REF, False).rows))
+expect("speedAccuracy: kT just within its bound", True,
+       lambda c: c.rows.extend(sa.checks(study(kT=bound - 0.001), REF, False).rows))
+expect("speedAccuracy: nu 10 % + 4 budgets off", False,
+       lambda c: c.rows.extend(sa.checks(study(nu=-(0.10 + 4 * 0.085) - 0.001), REF, False).rows))
+expect("speedAccuracy: the smallest step blew up", False,
+       lambda c: c.rows.extend(sa.checks(study(unstable=True), REF, False).rows))
+expect("speedAccuracy: dt 0.15 not stopped", False, lambda c: c.rows.extend(sa.checks(study(stable=True), REF, False).rows))
+expect("speedAccuracy: no reference run", False, lambda c: c.rows.extend(sa.checks(study(), None, False).rows))
 
 # latticeWall. agreement_check(checks, name, a, b, difference, its error, budget); no_slip_check and
 # nu_check; wall_pairs with a run of too few super-blocks.

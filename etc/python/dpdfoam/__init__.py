@@ -26,6 +26,8 @@ Modules:
     fields      an x-z grid of bins as arrays, a continuum twin's cells on it, relative L2, the bins' kT
     sweep       runSweep's sweeps of a wall parameter (variant, slip, published comparison, trend checks,
                 profiles), a profile near its walls, channels compared with long-block errors
+    stepstudy   a study of the time step per integrator: cost model, where an error passes a level,
+                blow-ups, the largest step that keeps a property, equal accuracy, the pictures
 
 The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip,
 chainScaling): the package reads their results (fitSlipLength's superBlocks entry gives the jackknife

@@ -19,20 +19,17 @@ results.dat also gives
     step qualifies. Speed-up = cost(GW at 0.02) / cost(method at that step), cost being seconds per
     particle per time unit.
 
-Cost is CPU time (all threads) per particle per time unit. A step costs the same whatever dt, so each
-integrator's cost per time unit at dt is its median cost per particle-step over its stable runs, over
-dt: one run slowed by other jobs on the machine (CPU time still grows when they contend for caches and
-memory) then moves nothing. The per-run costs stay in the table; results.dat gives the medians and
-their spread.
+Cost is CPU time (all threads) per particle per time unit: each integrator's median cost per
+particle-step over its stable runs, over dt (dpdfoam.stepstudy.apply_cost_model); the per-run costs stay
+in the table, results.dat gives the medians and their spread.
 """
-import math
 import os
 import sys
 
-import numpy as np
-
 from dpdfoam.checks import Checks
 from dpdfoam.plots import label as label_axes, plt, save
+from dpdfoam.stepstudy import (apply_cost_model, as_accurate, crossing, draw_errors_against_cost, draw_stability_map,
+                               first_unstable, largest_step, measured)
 
 TABLE = "postProcessing/integratorSpeedAccuracy/speedAccuracy.dat"
 BASELINE = ("GrootWarren0.65", 0.02)  # the method and step the speed-up is measured against
@@ -41,7 +38,6 @@ QUANTITIES = (("kT", "kT"), ("P", "pressure"), ("nu", "viscosity"))
 # the viscosity (nu), each relative, with its standard error (<name>se); nu and P against the reference.
 COLUMNS = "dt kT kTse pressure pressureSe P Pse viscosity viscositySe nu nuse cost unstable after".split()
 ERROR_LEVELS = ((0.01, "tab:green"), (0.05, "tab:orange"))  # 1 % and 5 %: the lines, the stability map's kT
-MARKERS = "osD^v<>"
 
 
 def read_rows(path):
@@ -64,105 +60,20 @@ def read_rows(path):
     return rows, reference
 
 
-def apply_cost_model(rows):
-    """Per integrator: (median, lowest, highest) CPU seconds per particle-step over its stable runs; each
-    stable run's measured cost replaced by that median over dt."""
-    costs = {}
-    for label, points in rows.items():
-        per_step = sorted(p["cost"] * p["dt"] for p in points if not p["unstable"] and not math.isnan(p["cost"]))
-        if per_step:
-            costs[label] = (float(np.median(per_step)), per_step[0], per_step[-1])
-            for p in points:
-                if not p["unstable"]:
-                    p["cost"] = costs[label][0] / p["dt"]
-    return costs
-
-
-def measured(p, q):
-    return not p["unstable"] and not math.isnan(p[q])
-
-
-def crossing(points, level):
-    """The step at which |kT error| first passes level: interpolated between the last step below it
-    and the first above it (a blow-up counts as above); None when never passed, '<dt' when already at
-    the smallest step."""
-    previous = None
-    for p in points:
-        above = p["unstable"] or abs(p["kT"]) > level
-        if above:
-            if previous is None:
-                return "<%g" % p["dt"]
-            if p["unstable"]:
-                return "%.3g-%.3g" % (previous["dt"], p["dt"])
-            e0, e1 = abs(previous["kT"]), abs(p["kT"])
-            return "%.3g" % (previous["dt"] + (level - e0) * (p["dt"] - previous["dt"]) / (e1 - e0))
-        previous = p
-    return None
-
-
-def first_unstable(points):
-    """The smallest step at which the run's monitor stopped the integrator; None when it never did."""
-    return next((p["dt"] for p in points if p["unstable"]), None)
-
-
-def largest_step(points, qualifies):
-    """The largest measured step up to which every step qualifies; None when the smallest does not."""
-    best = None
-    for p in points:
-        if not qualifies(p):
-            break
-        best = p
-    return best
-
-
-def as_accurate(p, base, quantities):
-    """Whether every error of p is within base's, within two combined standard errors (only an error
-    above that bound disqualifies: a NaN standard error does not)."""
-    return all(measured(p, q) and not abs(p[q]) > abs(base[q]) + 2 * math.hypot(p[q + "se"], base[q + "se"])
-               for q in quantities)
-
-
 def reference_name(reference):
     """What the pressure and the viscosity errors are taken against."""
     return "%s at dt %g (reference run)" % reference[:2] if reference else "the reference run"
 
 
 def draw_errors(ax, rows, q, name, against):
-    """|error| of quantity q against the cost, one curve per integrator, each point labelled with its dt."""
-    for k, (label, points) in enumerate(rows.items()):
-        ok = [p for p in points if measured(p, q)]
-        if not ok:
-            continue
-        cost = np.array([p["cost"] for p in ok])
-        err = np.array([max(abs(p[q]), 1e-5) for p in ok])
-        se = np.array([p[q + "se"] for p in ok])
-        ax.errorbar(cost, 100 * err, yerr=100 * se, marker=MARKERS[k % len(MARKERS)], label=label, capsize=2)
-        for p, c, e in zip(ok, cost, err):
-            ax.annotate("%g" % p["dt"], (c, 100 * e), fontsize=6, xytext=(3, 3), textcoords="offset points")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    for level, colour in ERROR_LEVELS:
-        ax.axhline(100 * level, color=colour, lw=0.8, ls="--")
+    draw_errors_against_cost(ax, rows, q, ERROR_LEVELS)
     label_axes(ax, None, "cost: CPU seconds per particle per time unit (median step cost / dt)",
                "|%s error| (%%)  (labels: dt)" % name, legend=7)
     ax.set_title("%s error against cost (against %s)" % (name, against), fontsize=10)
 
 
-def draw_stability_map(ax, rows):
-    """Per integrator: the measured stable steps, the interpolated kT error crossings, the blow-up."""
-    for k, (label, points) in enumerate(rows.items()):
-        stable_dt = [p["dt"] for p in points if not p["unstable"]]
-        ax.plot(stable_dt, [k] * len(stable_dt), "|", color="grey", markersize=12)
-        for level, colour in ERROR_LEVELS:
-            c = crossing(points, level)
-            if c and not c.startswith("<") and "-" not in c:  # interpolated, not a bound or a bracket
-                ax.plot(float(c), k, "o", color=colour)
-        u = first_unstable(points)
-        if u is not None:
-            ax.plot(u, k, "x", color="tab:red", markersize=10, mew=2)
-    ax.set_yticks(range(len(rows)))
-    ax.set_yticklabels(list(rows.keys()))
-    ax.set_xlabel("dt")
+def draw_stability(ax, rows):
+    draw_stability_map(ax, rows, "kT", ERROR_LEVELS)
     ax.set_title("stability map: | measured, o kT error 1 % (green) and 5 % (orange), x blow-up", fontsize=9)
 
 
@@ -170,7 +81,7 @@ def plot(rows, reference):
     fig, axes = plt.subplots(2, 2, figsize=(13, 10))
     for ax, (q, name) in zip(axes.flat[:3], QUANTITIES):
         draw_errors(ax, rows, q, name, "set kT" if q == "kT" else reference_name(reference))
-    draw_stability_map(axes.flat[3], rows)
+    draw_stability(axes.flat[3], rows)
     save(fig, "speedAccuracy.png", dpi=120)
 
 
@@ -194,7 +105,7 @@ def stability_lines(rows):
              "# '-' when not reached; recommended: largest measured step with |kT error| <= 1 % up to it)",
              "# integrator dt1percent dt5percent dtBlowUp recommendedDt1percent"]
     for label, points in rows.items():
-        c1, c5, u = crossing(points, 0.01), crossing(points, 0.05), first_unstable(points)
+        c1, c5, u = crossing(points, "kT", 0.01), crossing(points, "kT", 0.05), first_unstable(points)
         r = largest_step(points, lambda p: not (p["unstable"] or abs(p["kT"]) > 0.01))  # the recommended step
         lines.append("%-16s %-10s %-10s %-8s %s" % (label, c1 or "-", c5 or "-", fmt(u), fmt(r and r["dt"])))
     return lines
