@@ -29,7 +29,6 @@ double probeSpacingOf(const BackgroundGrid& g) {
     return spacing == 0.0 ? 0.5 * g.spacing.minCoeff() : spacing;
 }
 
-
 }  // namespace
 
 GeometryShape::GeometryShape(SignedDistanceField field)

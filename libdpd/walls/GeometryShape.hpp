@@ -32,7 +32,7 @@ public:
     double signedDistance(const Eigen::Vector3d& r) const override { return field().distance(r); }
     SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return field().at(r); }
     // A particle is near unless it is frozen, or its step's start is known, the step is short and the
-    // clearance around where it ends exceeds the reach: one lookup in a small table for most particles.
+    // clearance of its path exceeds the reach: one lookup in a small table for most particles.
     void markWithin(const Particles& p, long begin, long end, double reach, const std::vector<std::uint8_t>& frozenOfSpecies,
                     std::uint8_t* near) const override;
     // The path probed by distance alone; the normals looked up only where the step entered the solid

@@ -75,6 +75,18 @@ TEST_F(TwoGrains, NoPointOfAPathLiesCloserToTheSurfaceThanItsClearance) {
     EXPECT_EQ(tight, checked);
 }
 
+// How many of p the shape marks within a bounce layer of 0.1, chunk by chunk as the wall passes ask.
+long markedNear(const WallShape& shape, const Particles& p, const std::vector<std::uint8_t>& frozenOfSpecies) {
+    std::uint8_t near[kWallChunk];
+    long marked = 0;
+    for (long c = 0; c < static_cast<long>(p.size()); c += kWallChunk) {
+        const long end = std::min<long>(c + kWallChunk, static_cast<long>(p.size()));
+        shape.markWithin(p, c, end, 0.1, frozenOfSpecies, near);
+        for (long i = c; i < end; ++i) marked += near[i - c];
+    }
+    return marked;
+}
+
 // A shape that hands every call to a geometry but marks every particle as near: the wall then looks
 // at each one.
 class EveryParticleNear : public WallShape {
@@ -115,13 +127,7 @@ TEST_F(TwoGrains, TheWallReturnsExactlyTheParticlesItWouldReturnLookingAtEveryOn
     for (Particles* moved : {&p, &q})
         for (std::size_t i = 0; i < moved->size(); ++i)
             moved->rx[i] += moved->vx[i], moved->ry[i] += moved->vy[i], moved->rz[i] += moved->vz[i];
-    std::uint8_t near[kWallChunk];
-    long marked = 0;
-    for (long c = 0; c < static_cast<long>(p.size()); c += kWallChunk) {
-        const long end = std::min<long>(c + kWallChunk, static_cast<long>(p.size()));
-        shape->markWithin(p, c, end, 0.1, mobile, near);
-        for (long i = c; i < end; ++i) marked += near[i - c];
-    }
+    const long marked = markedNear(*shape, p, mobile);
     const PairRandom random(11);
     std::vector<DeferredCrossing> deferred;
     WallStep a{p, mobile, box, random, 4, 1.0, 0.01, deferred, {}}, b{q, mobile, box, random, 4, 1.0, 0.01, deferred, {}};
@@ -168,13 +174,7 @@ TEST_F(TwoGrains, FrozenParticlesInTheGrainsAreNeitherMarkedNorMoved) {
     }
     shape->recordPositions(p, frozen);
     const Particles before = p;
-    std::uint8_t near[kWallChunk];
-    long marked = 0;
-    for (long c = 0; c < static_cast<long>(p.size()); c += kWallChunk) {
-        const long end = std::min<long>(c + kWallChunk, static_cast<long>(p.size()));
-        shape->markWithin(p, c, end, 0.1, frozen, near);
-        for (long i = c; i < end; ++i) marked += near[i - c];
-    }
+    const long marked = markedNear(*shape, p, frozen);
     EXPECT_EQ(marked, 0);
     const PairRandom random(11);
     std::vector<DeferredCrossing> deferred;
