@@ -7,14 +7,20 @@
 #   rho 3, a 25,    gamma 4.5: nu = 0.282  (halves 0.2815, 0.2822)
 #   rho 4, a 18.75, gamma 4.5: nu = 0.2778 (halves 0.2781, 0.2775)
 # This code runs the same set-up three times (three seeds, each LAMMPS's whole protocol), and the mean
-# of fitSlipLength's reversePoiseuille nu must lie within 2 % of each, after its standard error is
+# of fitSlipLength's reversePoiseuille nu must lie within 2 % of LAMMPS's, after its standard error is
 # found within a third of that, 0.67 % (one run's error is ~0.9 %: 2,000 time units hold few decay
 # times of the box's slow modes; three runs make it ~0.5 %). A long test (ctest label long;
-# ./Alltest -long and CI run it): about a quarter of an hour on two cores (rho 3 runs on one thread).
-#   $1: the directory of the executables, $2: the source directory
+# ./Alltest -long and CI run it), one test a fluid so that ctest runs the two side by side with the
+# rest: rho 3 about 27 minutes and rho 4 about 35 on one thread of a slow 2-core machine.
+#   $1: the directory of the executables, $2: the source directory, $3: the fluid, rho3 or rho4
 set -u
 bin=$1
 src=$2
+case ${3-} in
+    rho3) fluid="3 25 0.282" ;;
+    rho4) fluid="4 18.75 0.2778" ;;
+    *) echo "lammpsViscosity: the third argument must be rho3 or rho4, not '${3-}'"; exit 1 ;;
+esac
 . "$src/tests/shellTestFunctions" || exit 1
 work=$(mktemp -d "${TMPDIR:-/tmp}/lammpsViscosity.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -66,21 +72,19 @@ runCase() {
     done
 }
 
-for fluid in "3 25 0.282" "4 18.75 0.2778"; do
-    read -r rho a lammps <<< "$fluid"
-    runs=""
-    for seed in 11 12 13; do
-        c=$work/rho$rho.seed$seed
-        writeCase "$c" "$rho" "$a" "$seed"
-        runCase "$c" || continue
-        echo "rho $rho, seed $seed: nu $(fitted "$c" nu) +- $(fitted "$c" nuError)"
-        runs+="$(fitted "$c" nu) $(fitted "$c" nuError)"$'\n'
-    done
-    # The mean of the runs and its standard error, from each run's error (empty if a run is missing).
-    read -r nu error <<< "$(printf '%s' "$runs" | awk 'NF == 2 { n++; s += $1; v += $2 * $2 }
-        END { if (n == 3) printf "%.6f %.6f", s / n, sqrt(v) / n }')"
-    echo "rho $rho, a $a: nu $nu +- $error over three runs (LAMMPS $lammps)"
-    closeTo "$error" 0 "$(awk -v l="$lammps" 'BEGIN { print 0.02 / 3 * l }')" "rho $rho: nu's standard error (budget a third of 2 %)"
-    closeTo "$nu" "$lammps" "$(awk -v l="$lammps" 'BEGIN { print 0.02 * l }')" "rho $rho: nu against LAMMPS's (2 %)"
+read -r rho a lammps <<< "$fluid"
+runs=""
+for seed in 11 12 13; do
+    c=$work/rho$rho.seed$seed
+    writeCase "$c" "$rho" "$a" "$seed"
+    runCase "$c" || continue
+    echo "rho $rho, seed $seed: nu $(fitted "$c" nu) +- $(fitted "$c" nuError)"
+    runs+="$(fitted "$c" nu) $(fitted "$c" nuError)"$'\n'
 done
-finishTests lammpsViscosity
+# The mean of the runs and its standard error, from each run's error (empty if a run is missing).
+read -r nu error <<< "$(printf '%s' "$runs" | awk 'NF == 2 { n++; s += $1; v += $2 * $2 }
+    END { if (n == 3) printf "%.6f %.6f", s / n, sqrt(v) / n }')"
+echo "rho $rho, a $a: nu $nu +- $error over three runs (LAMMPS $lammps)"
+closeTo "$error" 0 "$(awk -v l="$lammps" 'BEGIN { print 0.02 / 3 * l }')" "rho $rho: nu's standard error (budget a third of 2 %)"
+closeTo "$nu" "$lammps" "$(awk -v l="$lammps" 'BEGIN { print 0.02 * l }')" "rho $rho: nu against LAMMPS's (2 %)"
+finishTests "lammpsViscosity $3"
