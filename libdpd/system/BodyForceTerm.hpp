@@ -7,7 +7,6 @@ namespace dpd {
 class BodyForceTerm : public ForceTerm {
 public:
     static std::unique_ptr<ForceTerm> New(const System& system);
-    bool readsVelocities() const override { return false; }
     void add(System& system, const ForcePass& pass) const override;
 };
 

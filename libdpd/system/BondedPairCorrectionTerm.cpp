@@ -7,7 +7,7 @@ namespace dpd {
 
 std::unique_ptr<ForceTerm> BondedPairCorrectionTerm::New(const System& system) {
     if (system.bonds.empty() || system.bondedPairs.keepsAll()) return nullptr;
-    return std::make_unique<BondedPairCorrectionTerm>();
+    return std::make_unique<BondedPairCorrectionTerm>(system.bondedPairs.capabilities().features);
 }
 
 void BondedPairCorrectionTerm::add(System& s, const ForcePass&) const {

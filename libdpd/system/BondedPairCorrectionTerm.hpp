@@ -7,8 +7,8 @@ namespace dpd {
 
 class BondedPairCorrectionTerm : public ForceTerm {
 public:
+    explicit BondedPairCorrectionTerm(Features fromBondedPairs) : ForceTerm(fromBondedPairs) {}
     static std::unique_ptr<ForceTerm> New(const System& system);
-    bool readsVelocities() const override { return true; }  // the dissipative part taken back
     void add(System& system, const ForcePass& pass) const override;
 };
 

@@ -231,7 +231,7 @@ void System::buildForceTerms() {
     for (const std::string& type : registry.names()) {
         std::shared_ptr<const ForceTerm> term = registry.make(type, *this);
         if (!term) continue;
-        velocityTerms_ = velocityTerms_ || term->readsVelocities();
+        velocityTerms_ = velocityTerms_ || term->features().has(Feature::velocityForce);
         forceTerms_.push_back(std::move(term));
         forceTermTypes_.push_back(type);
     }

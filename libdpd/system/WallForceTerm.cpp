@@ -6,7 +6,10 @@ namespace dpd {
 
 std::unique_ptr<ForceTerm> WallForceTerm::New(const System& system) {
     if (!system.walls.anyActsWithForces()) return nullptr;
-    return std::make_unique<WallForceTerm>();
+    Features fromWalls;
+    for (std::size_t i = 0; i < system.walls.size(); ++i)
+        if (system.walls[i].actsWithForces()) fromWalls |= system.walls[i].capabilities().features;
+    return std::make_unique<WallForceTerm>(fromWalls);
 }
 
 void WallForceTerm::add(System& s, const ForcePass& pass) const {

@@ -8,8 +8,8 @@ namespace dpd {
 
 class WallForceTerm : public ForceTerm {
 public:
+    explicit WallForceTerm(Features fromWalls) : ForceTerm(fromWalls) {}
     static std::unique_ptr<ForceTerm> New(const System& system);
-    bool readsVelocities() const override { return true; }
     void add(System& system, const ForcePass& pass) const override;
 };
 
