@@ -94,7 +94,7 @@ def compare(c, label, m, e, ref, ce, we, budget):
     return sw.against(c, label, m, e, Reference(ref, ce), "slipParallel", we, budget)
 
 
-B = sw.budget("b, angle sweep", test=False)
+B = sw.budget("b, angle sweep", test=False, fluid="a25")
 cmp = lambda c, m, e, *rest: compare(c, "b_par", m, e, *rest)
 broken("stripedWall b_par", cmp, (1.143, 0.029, 1.0486, 0.098, 0.091, B), 1.0486 + 3 * B + 0.001, 0.12)
 expect("stripedWall b_par just inside the bound", True, lambda c: cmp(c, 1.0486 + 3 * B - 0.001, 0.029, 1.0486, 0.098, 0.091, B))
@@ -113,16 +113,16 @@ full = [("b, angle sweep", 0.724, 0.021, 0.6520, 0.0995, 0.091), ("b, one run", 
         ("flux ratio, one run", 0.027, 0.017, 0.0161, 0.0002, 0), ("flux ratio, one run", 0.053, 0.006, 0.0396, 0.0011, 0)]
 for kind, m, e, ref, ce, we in full:
     expect(f"stripedWall full size, {kind}: {m} +- {e} against {ref}", True,
-           lambda c: compare(c, kind, m, e, ref, ce, we, sw.budget(kind, test=False)))
-Z = sw.budget("zero flux", test=False)
+           lambda c: compare(c, kind, m, e, ref, ce, we, sw.budget(kind, test=False, fluid="a25")))
+Z = sw.budget("zero flux", test=False, fluid="a25")
 broken("stripedWall zero flux at theta 90", lambda c, r, e, b: sw.zero_flux(c, 90, r, e, b), (-0.008, 0.009, Z), -3 * Z - 0.001, 0.02)
-T = sw.budget("the flow turns", test=False)
+T = sw.budget("the flow turns", test=False, fluid="a25")
 broken("stripedWall the flow turns at theta 45", sw.turns, (0.050, 0.007, T), 3 * T - 0.001, 0.011)
-L = sw.budget("flux linear", test=False)
+L = sw.budget("flux linear", test=False, fluid="a25")
 lin = lambda c, q2, e2, q1, e1, b: sw.linear(c, "along the stripes", q1, e1, q2, e2, b)
 broken("stripedWall flux linear in the force", lin, (7.546, 0.088, 7.625, 0.056, L), 7.625 * (1 - 3 * L) - 0.01, 0.2)
 expect("stripedWall flux linear: flux at g zero", False, lambda c: lin(c, 7.546, 0.088, 0.0, 0.056, L))
-R = sw.budget("at rest, kT", test=False)
+R = sw.budget("at rest, kT", test=False, fluid="a25")
 rest = lambda c, g, ge, n, ne, b: sw.same_at_rest(c, "kT", g, ge, n, ne, b)
 broken("stripedWall kT at rest", rest, (1.0008, 0.0015, 1.0019, 0.0015, R), 1.0019 + 3 * R + 0.001, 0.003)
 
