@@ -114,6 +114,19 @@ full = [("b, angle sweep", 0.724, 0.021, 0.6520, 0.0995, 0.091), ("b, one run", 
 for kind, m, e, ref, ce, we in full:
     expect(f"stripedWall full size, {kind}: {m} +- {e} against {ref}", True,
            lambda c: compare(c, kind, m, e, ref, ce, we, sw.budget(kind, test=False, fluid="a25")))
+# The review's fluid (a = 0, the default since 2026-11-29): its full-size values at its own budgets
+# (README: b_par 1.7313 +- 0.0619 against 1.4795, calibration 0.0935, wall 0.0832; b_perp 1.2194 +-
+# 0.0570 against 1.0885; b_par - b_perp 0.5119 +- 0.0841 against 0.3910), and b_par just beyond its bound.
+A0 = sw.budget("b, angle sweep", test=False, fluid="a0")
+for kind, m, e, ref, ce, we in (("b, angle sweep", 1.7313, 0.0619, 1.4795, 0.0935, 0.0832),
+                                ("b, angle sweep", 1.2194, 0.0570, 1.0885, 0.0941, 0.0832),
+                                ("b_par - b_perp, angle sweep", 0.5119, 0.0841, 0.3910, 0.0083, 0)):
+    expect(f"stripedWall a = 0 full size, {kind}: {m} +- {e} against {ref}", True,
+           lambda c: compare(c, kind, m, e, ref, ce, we, sw.budget(kind, test=False, fluid="a0")))
+expect("stripedWall a = 0 b_par just beyond its bound", False,
+       lambda c: cmp(c, 1.4795 + 3 * A0 + 0.001, 0.0619, 1.4795, 0.0935, 0.0832, A0))
+expect("stripedWall a = 0 has no budget for a study it does not run (NaN fails)", False,
+       lambda c: cmp(c, 1.4795, 0.0619, 1.4795, 0.0935, 0.0832, sw.budget("the flow turns", test=False, fluid="a0")))
 Z = sw.budget("zero flux", test=False, fluid="a25")
 broken("stripedWall zero flux at theta 90", lambda c, r, e, b: sw.zero_flux(c, 90, r, e, b), (-0.008, 0.009, Z), -3 * Z - 0.001, 0.02)
 T = sw.budget("the flow turns", test=False, fluid="a25")
