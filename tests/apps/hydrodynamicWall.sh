@@ -79,8 +79,8 @@ for k in 0 1 2 3; do
 done
 grep -q 'integrator *"GrootWarren lambda 0.65";' "$calibration" || fail "the calibration's integrator: $(grep integrator "$calibration")"
 rm "$calibration"
-"$bin/dpdDictionary" "$work/p0.4/constant/dpdProperties" -entry pairCoeffs/fluid-fluid/a -set 0 > /dev/null
+"$bin/dpdDictionary" "$work/p0.4/constant/dpdProperties" -entry pairCoeffs/fluid-fluid/a -set 25 > /dev/null
 "$bin/hydrodynamicWall" -couette "${couette[@]}" -poiseuille "${poiseuille[@]}" -calibration "$calibration" > "$log" 2>&1
-expectError $? "$log" "p0.4: not the fluid and wall model of" "fluid/a 0 against 25"
+expectError $? "$log" "p0.4: not the fluid and wall model of" "fluid/a 25 against 0"
 [ ! -e "$calibration" ] || fail "a refused calibration left a file"
 finishTests hydrodynamicWall
