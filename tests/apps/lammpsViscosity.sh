@@ -11,7 +11,7 @@
 # found within a third of that, 0.67 % (one run's error is ~0.9 %: 2,000 time units hold few decay
 # times of the box's slow modes; three runs make it ~0.5 %). A long test (ctest label long;
 # ./Alltest -long and CI run it), one test a fluid so that ctest runs the two side by side with the
-# rest: rho 3 about 27 minutes and rho 4 about 35 on one thread of a slow 2-core machine.
+# rest: rho 3 about 26 minutes and rho 4 about 35 on one thread of a slow 2-core machine.
 #   $1: the directory of the executables, $2: the source directory, $3: the fluid, rho3 or rho4
 set -u
 bin=$1
