@@ -43,7 +43,12 @@ SlipCalibrationKey slipCalibrationFluid(const DpdModel& m, const Dictionary& pro
     key.dimension = m.dimension;
     key.integrator = makeIntegrator(m.integrator)->description();
     key.dt = Dictionary::readFile((fs::path(caseDir) / "system" / "controlDict").string()).getPositive<double>("deltaT");
-    const Dictionary builder = Dictionary::readFile((fs::path(caseDir) / "system" / "blockFrozenWallDict").string());
+    // The fluid's density as the case's builder fills it: blockFrozenWall for planes, randomEquilWall
+    // for a geometry.
+    const fs::path system = fs::path(caseDir) / "system";
+    const fs::path builderFile = fs::exists(system / "blockFrozenWallDict") || !fs::exists(system / "randomEquilWallDict")
+                                     ? system / "blockFrozenWallDict" : system / "randomEquilWallDict";
+    const Dictionary builder = Dictionary::readFile(builderFile.string());
     key.density = builder.subDict("fluid").getPositive<double>("density");
     return key;
 }
@@ -78,8 +83,8 @@ CalibratedWall CaseSlipCalibrations::resolve(const TunableSlipParameters& wallMo
     wall.planeOffset = friction.planeOffset;
     std::ostringstream note;
     note << "slipLength " << b << " from " << calibration.source() << ": gammaL " << friction.gammaL << " (b +- "
-         << friction.slipLengthError << " there), the plane " << friction.planeOffset << " +- "
-         << calibration.wallOffsetError() << " behind the wall's point";
+         << friction.slipLengthError << " there), acting " << friction.planeOffset << " +- "
+         << calibration.wallOffsetError() << " behind where the wall was put";
     if (b < calibration.smallestSlip())
         note << " (below the calibrated " << calibration.smallestSlip() << ": the stiffest wall, moved "
              << calibration.smallestSlip() - b << " out)";

@@ -19,12 +19,13 @@
 //              //             wall | lab) | bounceLayer (with alpha 0.1: the layer is alpha x cutoff
 //              //             thick); walls/WallRuleTypes.cpp. Any rule on any shape.
 //              // frozen particles behind a planar wall move with its velocity
-//              // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; }: a plane's friction layer acting
-//              // on the fluid within zc (friction gammaL) with a WCA repulsion (walls/TunableSlipLayer.hpp);
-//              // its reflection defaults to specular, a safety net behind the WCA wall
+//              // tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; }: a plane's or a geometry's friction
+//              // layer acting on the fluid within zc (friction gammaL) with a WCA repulsion
+//              // (walls/TunableSlipLayer.hpp); its reflection defaults to specular, a safety net behind it
 //              // slipLength 1; with tunableSlip { zc 1; epsilon 1; sigma 0.5; } (no gammaL): the wall
-//              // gives slip length 1 measured from its point, gammaL and the plane's offset from the
-//              // case's slip calibration (case/CaseSlipCalibrations.hpp, docs/walls.md 3.8)
+//              // gives slip length 1 measured from its point (a geometry's: its surface), gammaL and how
+//              // far behind it acts from the case's slip calibration (case/CaseSlipCalibrations.hpp,
+//              // docs/walls.md 3.8-3.9)
 //   stability  { maxKTRatio 2; maxInsideWalls 0; checkInterval 100; }   // optional; checkInterval in
 //                                                 // steps, besides every report and every write
 //   bonds      { type FENE; H 6; rMax 3; bondedPairs { dpd all; } }   // optional: polymer chains (their

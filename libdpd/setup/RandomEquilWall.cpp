@@ -13,6 +13,7 @@
 #include "setup/InitialFlow.hpp"
 #include "system/Monitors.hpp"
 #include "system/System.hpp"
+#include "walls/GeometryShape.hpp"
 #include "core/ThreadBudget.hpp"
 
 #include <algorithm>
@@ -32,6 +33,22 @@ int speciesOf(const Dictionary& parent, const std::string& key, const DpdModel& 
     if (model.species[s].frozen != frozen)
         d.fail("species", "'" + name + "' must " + (frozen ? "" : "not ") + "be frozen (see species in constant/dpdProperties)");
     return s;
+}
+
+// Where the geometry's wall has the fluid begin: how far behind the geometry's surface the wall acts (a
+// wall that asks for a slip length), and how far in front of that the fluid starts (its surface force's
+// repulsion).
+struct FluidStart {
+    double offset = 0.0, beyond = 0.0;
+};
+
+FluidStart fluidStartOf(const DpdModel& model) {
+    for (std::size_t k = 0; k < model.walls.size(); ++k)
+        if (const auto* shape = dynamic_cast<const GeometryShape*>(&model.walls[k].shape())) {
+            const SurfaceForce* force = model.walls[k].surfaceForce();
+            return {shape->surfaceOffset(), force ? force->fluidStartsBeyond() : 0.0};
+        }
+    return {};
 }
 
 std::vector<int> drivingAxes(const Dictionary& d, const DpdModel& model) {
@@ -99,20 +116,30 @@ void equilibrate(Snapshot& snap, const Dictionary& dict, const DpdModel& model, 
 // differ by a fraction of a grid cell) is dropped, so the run starts with no fluid inside its wall
 // and the wall is the geometry's solid, nothing more. With a wall thickness (a published wall's depth)
 // the solid particles within it are counted too; those beyond one cutoff are dropped all the same.
-Particles freezeWall(const Particles& p, const SolidRegion& solid, double cutoff, double thickness, int fluidSpecies,
-                     int wallSpecies, RandomEquilWallReport& report) {
+// A wall acting `start.offset` behind the geometry's surface (one that asks for a slip length) keeps
+// the fluid up to where it acts and freezes from there; a wall whose force repels the fluid keeps it
+// `start.beyond` in front. Without a wall species (wallSpecies < 0: a smooth wall, whose force stands
+// in for the solid) every solid particle is dropped.
+Particles freezeWall(const Particles& p, const SolidRegion& solid, double cutoff, double thickness, FluidStart start,
+                     int fluidSpecies, int wallSpecies, RandomEquilWallReport& report) {
     const SolidGeometry& geometry = solid.geometry;
-    const double reach = std::max(cutoff, thickness);
+    const double offset = start.offset;
+    const double reach = std::max(cutoff, thickness) + offset;
     std::vector<std::size_t> fluid, frozen;
     report.withinThickness = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const Eigen::Vector3d r(p.rx[i], p.ry[i], p.rz[i]);
+        const bool fluidHere = solid.distance.distance(r) + offset >= start.beyond;  // as the run's wall sees it
         if (!geometry.isSolid(r)) {
-            if (solid.distance.distance(r) >= 0.0) fluid.push_back(i);
+            if (fluidHere) fluid.push_back(i);
             continue;
         }
-        const double depth = -geometry.signedDistance(r, 2.0 * reach).distance;
-        if (depth <= cutoff) frozen.push_back(i);
+        const double depth = -geometry.signedDistance(r, 2.0 * reach).distance - offset;  // behind the acting surface
+        if (offset > 0.0 && depth < 0.0) {
+            if (fluidHere) fluid.push_back(i);
+            continue;
+        }
+        if (wallSpecies >= 0 && depth <= cutoff) frozen.push_back(i);
         if (thickness > 0.0 && depth <= thickness) ++report.withinThickness;
     }
     Eigen::Vector3d mean(0, 0, 0);
@@ -146,7 +173,7 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
     snap.speciesNames = model.species.names();
     for (int s = 0; s < model.species.size(); ++s) snap.speciesFrozen.push_back(model.species[s].frozen);
     const int fluidSpecies = speciesOf(dict, "fluid", model, false);
-    const int wallSpecies = speciesOf(dict, "wall", model, true);
+    const int wallSpecies = dict.found("wall") ? speciesOf(dict, "wall", model, true) : -1;
     const double density = dict.subDict("fluid").getPositive<double>("density");
     report.drivingAxes = drivingAxes(dict, model);
     const InitialFlow flow = readInitialFlow(dict.subDict("fluid"), model, snap.box, fluidSpecies, density);
@@ -167,9 +194,13 @@ Snapshot buildRandomEquilWall(const Dictionary& dict, const Dictionary& dpdPrope
     equilibrate(snap, dict, model, report);
 
     // 3. Freeze the wall, drop the rest of the solid.
-    const Dictionary& wallDict = dict.subDict("wall");
-    report.thickness = wallDict.found("thickness") ? wallDict.getPositive<double>("thickness") : 0.0;
-    snap.particles = freezeWall(snap.particles, solid, model.cutoff, report.thickness, fluidSpecies, wallSpecies, report);
+    report.thickness = dict.found("wall") && dict.subDict("wall").found("thickness")
+                           ? dict.subDict("wall").getPositive<double>("thickness") : 0.0;
+    const FluidStart start = fluidStartOf(model);
+    report.surfaceOffset = start.offset;
+    report.fluidStartsBeyond = start.beyond;
+    snap.particles = freezeWall(snap.particles, solid, model.cutoff, report.thickness, start, fluidSpecies, wallSpecies,
+                                report);
     addInitialFlow(snap.particles, 0, report.fluid, flow);  // the fluid comes first
     snap.time = 0.0;
     snap.step = 0;

@@ -8,7 +8,9 @@
 //                                                 // wallPositions (-20 20); } (setup/InitialFlow.hpp)
 //   wall          { species wall; }          // a frozen species: the particles kept in the solid;
 //                                            // optional thickness 1.5: a published wall's depth,
-//                                            // whose particles are counted (not kept beyond 1 cutoff)
+//                                            // whose particles are counted (not kept beyond 1 cutoff).
+//                                            // Optional: without it the wall is smooth (a tunable-slip
+//                                            // geometry wall, whose force stands in for the solid)
 //   equilibration { time 5; deltaT 0.02; }   // DPD run of the filled box: one fluid, no walls,
 //                                            // no body force, the integrator of dpdProperties
 //   drivingAxis   x;     // optional: the axis the flow must cross (percolation check); default
@@ -20,7 +22,10 @@
 // 3. freezes the particles in the solid within one cutoff of the fluid (exact distance to the
 //    geometry's surface) as the wall species, at rest, and drops the deeper ones. The fluid keeps its
 //    equilibrated velocities less their mean (no net momentum), plus the initial flow if one is
-//    given. Ids are renumbered, fluid first.
+//    given. Ids are renumbered, fluid first. A geometry wall that acts behind the geometry's surface
+//    (one asking for a slip length, docs/walls.md 3.9) keeps the fluid up to where it acts, and one
+//    whose force repels the fluid (the tunable-slip layer's WCA) keeps it sigma in front, as
+//    blockFrozenWall does.
 #include "io/Snapshot.hpp"
 
 #include <array>
@@ -35,6 +40,8 @@ struct DpdModel;
 struct RandomEquilWallReport {
     std::size_t filled = 0, fluid = 0, frozen = 0, dropped = 0;
     double thickness = 0.0;          // the wall entry's thickness (0: none given)
+    double surfaceOffset = 0.0;      // the geometry wall acts this far behind the geometry's surface
+    double fluidStartsBeyond = 0.0;  // and the fluid starts this far in front of where it acts
     std::size_t withinThickness = 0; // solid particles within it of the fluid (the published count)
     double gridPorosity = 0.0;       // fluid fraction of the background grid's cells
     double particlePorosity = 0.0;   // fluid / filled particles

@@ -31,12 +31,14 @@ double probeSpacingOf(const BackgroundGrid& g) {
 
 }  // namespace
 
-GeometryShape::GeometryShape(SignedDistanceField field)
+GeometryShape::GeometryShape(SignedDistanceField field, double surfaceOffset)
     : field_(std::make_shared<const SignedDistanceField>(std::move(field))),
+      offset_(surfaceOffset),
       probeSpacing_(probeSpacingOf(field_->grid())),
       clearance_(std::make_shared<const DistanceClearance>(*field_)) {}
 
-GeometryShape::GeometryShape(std::shared_ptr<const Dictionary> geometryDict) : geometryDict_(std::move(geometryDict)) {}
+GeometryShape::GeometryShape(std::shared_ptr<const Dictionary> geometryDict, double surfaceOffset)
+    : geometryDict_(std::move(geometryDict)), offset_(surfaceOffset) {}
 
 const SignedDistanceField& GeometryShape::field() const {
     if (!field_) throw std::logic_error("a geometry wall was used before it was built on the run's box");
@@ -45,7 +47,7 @@ const SignedDistanceField& GeometryShape::field() const {
 
 std::shared_ptr<WallShape> GeometryShape::builtOn(const ShapeBuildContext& c) const {
     if (field_) return nullptr;
-    return std::make_shared<GeometryShape>(readSolidRegion(*geometryDict_, c.caseDir, c.box, c.cutoff).distance);
+    return std::make_shared<GeometryShape>(readSolidRegion(*geometryDict_, c.caseDir, c.box, c.cutoff).distance, offset_);
 }
 
 std::shared_ptr<WallShape> GeometryShape::ownCopy() const {
@@ -57,6 +59,7 @@ std::string GeometryShape::description() const {
     const BackgroundGrid& g = field_->grid();
     std::ostringstream os;
     os << "distance field " << g.n[0] << " x " << g.n[1] << " x " << g.n[2] << " cells";
+    if (offset_ != 0.0) os << ", acting " << offset_ << " behind its surface";
     return os.str();
 }
 
@@ -87,7 +90,7 @@ void GeometryShape::markWithin(const Particles& p, long begin, long end, double 
     const Eigen::Vector3d& span = clearance_->span();
     // The interpolated distance is a weighted mean of the table's: rounding may take it a few ulps
     // below their least.
-    const double clear = reach + 1e-9 * (1.0 + std::abs(reach));
+    const double clear = reach + 1e-9 * (1.0 + std::abs(reach)) - offset_;
     for (long i = begin; i < end; ++i) {
         const std::size_t k = static_cast<std::size_t>(i);
         if (frozenOfSpecies[p.species[k]]) {  // a third of a porous box's particles, all near the surface
@@ -115,14 +118,14 @@ GeometryShape::Entry GeometryShape::findEntry(const Eigen::Vector3d& from, const
     entry.fluidPoint = from;
     for (int k = 1; k <= probes; ++k) {
         const Eigen::Vector3d r = from + (static_cast<double>(k) / probes) * delta;
-        const double d = f.distance(r);
+        const double d = f.distance(r) + offset_;
         if (k == probes) {
             entry.lastProbe = r;
             entry.distanceAtEnd = d;
         }
         if (d < 0.0) {
             entry.found = true;
-            entry.atFluidPoint = f.at(entry.fluidPoint);
+            entry.atFluidPoint = shifted(f.at(entry.fluidPoint));
             return entry;
         }
         entry.fluidPoint = r;
@@ -151,7 +154,8 @@ ShapeCrossing GeometryShape::crossing(const Particles& p, std::size_t i, const B
     const Eigen::Vector3d start = startInOrder(p, i) ? Eigen::Vector3d(startX_[i], startY_[i], startZ_[i]) : end;
     const Entry entry = findEntry(start, minimumImage(end - start, box));
     if (!entry.found) {
-        atEnd = entry.distanceAtEnd < normalWithin ? field().at(entry.lastProbe) : SurfaceDistance{entry.distanceAtEnd, {0, 0, 0}};
+        atEnd = entry.distanceAtEnd < normalWithin ? shifted(field().at(entry.lastProbe))
+                                                   : SurfaceDistance{entry.distanceAtEnd, {0, 0, 0}};
         return {};
     }
     return {true, returnPoint(entry, end, box), entry.atFluidPoint.normal};

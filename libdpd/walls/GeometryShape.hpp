@@ -10,6 +10,10 @@
 // the particle would have stepped right over it. The mirror plane is the surface's tangent plane on
 // the side the particle came from, so a particle past the middle of a thin feature still goes back
 // the way it came instead of out through the far side.
+//
+// A surface offset moves the surface that acts that far into the solid (the field's distance plus the
+// offset): a wall asking for a slip length puts its friction layer's surface behind the geometry's
+// (docs/walls.md 3.9), as a planar wall moves its plane.
 #include "geometry/DistanceClearance.hpp"
 #include "geometry/SignedDistanceField.hpp"
 #include "walls/WallShape.hpp"
@@ -22,15 +26,17 @@ class Dictionary;
 
 class GeometryShape : public WallShape {
 public:
-    // The solid of this field.
-    explicit GeometryShape(SignedDistanceField field);
+    // The solid of this field, its surface moved `surfaceOffset` into the solid.
+    explicit GeometryShape(SignedDistanceField field, double surfaceOffset = 0.0);
     // The solid of a geometry block, to be built on the run's box (builtOn).
-    explicit GeometryShape(std::shared_ptr<const Dictionary> geometryDict);
+    explicit GeometryShape(std::shared_ptr<const Dictionary> geometryDict, double surfaceOffset = 0.0);
 
     const SignedDistanceField& field() const;
     std::string description() const override;
-    double signedDistance(const Eigen::Vector3d& r) const override { return field().distance(r); }
-    SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return field().at(r); }
+    // How far behind the geometry's surface the acting surface lies (0: on it).
+    double surfaceOffset() const { return offset_; }
+    double signedDistance(const Eigen::Vector3d& r) const override { return field().distance(r) + offset_; }
+    SurfaceDistance surfaceAt(const Eigen::Vector3d& r) const override { return shifted(field().at(r)); }
     // A particle is near unless it is frozen, or its step's start is known, the step is short and the
     // clearance of its path exceeds the reach: one lookup in a small table for most particles.
     void markWithin(const Particles& p, long begin, long end, double reach, const std::vector<std::uint8_t>& frozenOfSpecies,
@@ -58,6 +64,10 @@ private:
         Eigen::Vector3d lastProbe{0, 0, 0};   // the path's end as probed
         double distanceAtEnd = 0.0;           // there (where the path did not enter before it)
     };
+    SurfaceDistance shifted(SurfaceDistance s) const {
+        s.distance += offset_;
+        return s;
+    }
     // Where the path from `from` by `delta` first enters the solid, if it does.
     Entry findEntry(const Eigen::Vector3d& from, const Eigen::Vector3d& delta) const;
     // Whether the ordered copy holds particle i's start.
@@ -67,6 +77,7 @@ private:
 
     std::shared_ptr<const Dictionary> geometryDict_;  // set while not built on a box
     std::shared_ptr<const SignedDistanceField> field_;
+    double offset_ = 0.0;           // the acting surface this far into the solid
     double probeSpacing_ = 0.0;     // half the smallest varying grid cell
     std::shared_ptr<const DistanceClearance> clearance_;
     std::vector<double> startX_, startY_, startZ_;  // the start of the current step, per particle

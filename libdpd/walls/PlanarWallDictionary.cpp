@@ -1,9 +1,9 @@
 // A planar wall read from its sub-dictionary of constant/dpdProperties' walls block.
 #include "walls/PlanarWallDictionary.hpp"
 
-#include "core/Error.hpp"
 #include "io/Dictionary.hpp"
 #include "walls/PlaneShape.hpp"
+#include "walls/TunableSlipDictionary.hpp"
 #include "walls/TunableSlipLayer.hpp"
 #include "walls/WallRuleTypes.hpp"
 #include "walls/WallTypes.hpp"
@@ -33,51 +33,16 @@ TunableSlipStripes readStripes(const Dictionary& sd, const PlanarWallSettings& w
     return s;
 }
 
-// tunableSlip { gammaL 2; zc 1; epsilon 1; sigma 0.5; } (docs/walls.md 3.5): all four are needed;
-// friction all (default) | tangential; fluidBehind { a 25; density 3; } (optional; density 0 is none).
-// A wall that asks for a slip length gives the model alone: its gammaL comes from the calibration.
-TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff, bool asksSlipLength) {
-    td.checkKeys({"gammaL", "zc", "epsilon", "sigma", "stripes", "friction", "fluidBehind"});
-    TunableSlipParameters t;
-    if (asksSlipLength && td.found("gammaL"))
-        td.fail("gammaL", "the wall asks for a slipLength, which sets gammaL from the slip calibration: give one of the two");
-    if (!asksSlipLength) t.gammaL = td.getNonNegative<double>("gammaL");
-    t.zc = td.getPositive<double>("zc");
-    t.epsilon = td.getPositive<double>("epsilon");
-    t.sigma = td.getPositive<double>("sigma");
-    const std::string friction = td.getOrDefault<std::string>("friction", "all");
-    if (friction != "all" && friction != "tangential")
-        td.fail("friction", "expected all (every velocity component) or tangential (along the plane), got '" + friction + "'");
-    t.tangentialOnly = friction == "tangential";
-    t.cutoff = cutoff;
-    if (td.found("fluidBehind")) {
-        if (!td.isDict("fluidBehind")) td.fail("fluidBehind", "expected { a ...; density ...; }");
-        const Dictionary& bd = td.subDict("fluidBehind");
-        bd.checkKeys({"a", "density"});
-        t.behindA = bd.getPositive<double>("a");
-        t.behindDensity = bd.getNonNegative<double>("density");  // 0: no fluid behind, the published wall
-    }
-    return t;
-}
-
 // slipLength b; (docs/walls.md 3.8): gammaL and the plane's offset behind `point` from the calibration
 // of the case's fluid and of the wall's model (its tunableSlip block).
-void resolveSlipLength(const Dictionary& wd, const WallReadContext& c, PlanarWallSettings& w) {
+void resolvePlanarSlipLength(const Dictionary& wd, const WallReadContext& c, PlanarWallSettings& w) {
     if (!w.hasTunableSlip)
         wd.fail("slipLength", "needs the wall's model: tunableSlip { zc ...; epsilon ...; sigma ...; } (gammaL comes from "
                               "the slip calibration)");
     if (w.hasStripes) wd.subDict("tunableSlip").fail("stripes", "a wall that asks for a slipLength is uniform");
-    if (!c.slipLengths) wd.fail("slipLength", "is resolved against the case's slip calibration: read it with its case");
-    try {
-        const CalibratedWall chosen = c.slipLengths->resolve(w.tunableSlip, w.slipLength);
-        w.tunableSlip.gammaL = chosen.gammaL;
-        w.planeOffset = chosen.planeOffset;
-        if (c.notes) c.notes->push_back("wall " + w.name + ": " + chosen.note);
-    } catch (const InputError&) {
-        throw;  // another file's entry (the controlDict's deltaT, the builder's density) names itself
-    } catch (const std::exception& e) {
-        wd.fail("slipLength", e.what());
-    }
+    const CalibratedWall chosen = resolveSlipLength(wd, c, w.tunableSlip, w.slipLength);
+    w.tunableSlip.gammaL = chosen.gammaL;
+    w.planeOffset = chosen.planeOffset;
 }
 
 PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadContext& c) {
@@ -107,7 +72,7 @@ PlanarWallSettings readPlanarWallSettings(const Dictionary& wd, const WallReadCo
             w.stripes = readStripes(wd.subDict("tunableSlip").subDict("stripes"), w, c.dimension);
         }
     }
-    if (w.asksSlipLength) resolveSlipLength(wd, c, w);
+    if (w.asksSlipLength) resolvePlanarSlipLength(wd, c, w);
     // Behind a tunable-slip wall's WCA repulsion the rule is only a safety net: specular by default,
     // since it adds no tangential friction of its own to the slip that gammaL sets.
     const std::string defaultRule = w.hasTunableSlip ? "specular" : "bounceBack";

@@ -22,6 +22,9 @@ public:
     virtual std::string unfitFor(const Box&) const { return {}; }
     // Marks the axes along which the force makes the mean flow vary.
     virtual void markFlowAxes(const Box&, std::array<bool, 3>&) const {}
+    // How far in front of the surface a builder starts the fluid: nearer, a repulsion that diverges at
+    // the surface would throw a particle across the box on the first step.
+    virtual double fluidStartsBeyond() const { return 0.0; }
     // Adds the force to the mobile particles in front of the surface; wallVelocity: the wall's.
     virtual void addForces(WallStep& s, const WallShape& shape, const Eigen::Vector3d& wallVelocity) const = 0;
 };

@@ -21,6 +21,8 @@ public:
     std::string description() const override;
     std::string unfitFor(const Box& box) const override;
     void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const override;
+    // sigma: there the WCA repulsion is epsilon, diverging nearer.
+    double fluidStartsBeyond() const override { return parameters_.sigma; }
     // Adds the force to every mobile particle in front of the surface within its reach (max of z_c and
     // the WCA range). Particles behind the surface feel nothing: the reflection rule returns them.
     void addForces(WallStep& s, const WallShape& shape, const Eigen::Vector3d& wallVelocity) const override;

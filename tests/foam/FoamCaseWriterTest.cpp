@@ -6,7 +6,9 @@
 #include "foam/FoamCaseSpec.hpp"
 #include "foam/FoamCaseWriter.hpp"
 #include "../geometry/GeometryTestFiles.hpp"
+#include "../support/ExactSlipCalibration.hpp"
 #include "io/Dictionary.hpp"
+#include "walls/SlipCalibration.hpp"
 
 #include <gtest/gtest.h>
 
@@ -165,6 +167,34 @@ TEST_F(FoamCase, SolidCellsAreThoseWhoseCentresLieInTheMask) {
     EXPECT_NE(topo.find("action  invert;"), std::string::npos) << topo;
     EXPECT_NE(dpd::foamBlockMeshDict(s).find("solidWalls"), std::string::npos);
     EXPECT_TRUE(s.isPeriodic(0) && s.isPeriodic(2));
+}
+
+// A geometry wall asking for a slip length (docs/walls.md 3.9) has no continuum twin with slip yet: refused
+// at its slipLength, not given no-slip walls. The case holds a calibration, so that the wall itself reads.
+TEST_F(FoamCase, AGeometryWallAskingASlipLengthIsRefused) {
+    geometryTest::writePgm((dir / "constant/geometry/mask.pgm").string(),
+                           {{0, 0, 0, 0}, {255, 255, 255, 255}, {255, 255, 255, 255}, {0, 0, 0, 0}});
+    geometryTest::writeText((dir / "system/controlDict").string(), "deltaT 0.01;\n");
+    geometryTest::writeText((dir / "system/randomEquilWallDict").string(), "fluid { species fluid; density 3; }\n");
+    fs::create_directories(dir / "cache");
+    ::setenv("DPD_SLIP_CALIBRATIONS", (dir / "cache").c_str(), 1);
+    Dictionary calibration((dir / "constant/slipCalibration").string());
+    dpd::test::exactSlipCalibration().writeTo(calibration);
+    dpd::writeDictionaryFile((dir / "constant/slipCalibration").string(), calibration);
+    const std::string props =
+        kHeader + "dimension 3; kT 1; seed 1;\nspecies { fluid { frozen no; } }\npairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n"
+                  "integrator { type GrootWarren; lambda 0.65; }\nbodyForce { type uniform; value (0.02 0 0); }\n"
+                  "geometry { type imageMask; file \"constant/geometry/mask.pgm\"; solidValues (0); pixelSize 1; extrudeAxis y; }\n"
+                  "walls { channel { type geometry; slipLength 1; tunableSlip { zc 1; epsilon 1; sigma 0.5; "
+                  "fluidBehind { a 25; density 3; } } } }\n";
+    try {
+        spec("box { min (0 0 0); max (4 1 4); } nu 1; cellSize 0.5;", props);
+        ADD_FAILURE() << "a geometry wall asking for a slip length got a twin";
+    } catch (const dpd::InputError& e) {
+        EXPECT_EQ(e.keyword(), "slipLength") << e.what();
+        EXPECT_NE(std::string(e.what()).find("continuum twin of a geometry wall has no slip"), std::string::npos) << e.what();
+    }
+    ::unsetenv("DPD_SLIP_CALIBRATIONS");
 }
 
 TEST_F(FoamCase, WhatTheContinuumCaseCannotHoldIsRefused) {

@@ -40,6 +40,10 @@ int main(int argc, char** argv) {
         if (r.thickness > 0.0)
             std::cout << " (" << r.withinThickness << " in the wall's thickness " << r.thickness << ": within one cutoff of the "
                       << "fluid frozen, the rest dropped)";
+        if (!dict.found("wall")) std::cout << " (no wall entry: a smooth wall, every solid particle dropped)";
+        if (r.surfaceOffset > 0.0 || r.fluidStartsBeyond > 0.0)
+            std::cout << "\nFluid starts     : " << r.fluidStartsBeyond << " in front of where the wall acts (its repulsion), "
+                      << r.surfaceOffset << " behind the geometry's surface (its slipLength)";
         std::cout << "\n"
                   << "Dropped          : " << r.dropped << "\n"
                   << "Written " << (caseDir / "0" / "particles.h5").string() << "\nEnd\n";

@@ -8,6 +8,8 @@ Checks, each first requiring the comparison's standard error below its budget, t
 within its bound (fixed, never widened by the run's error):
   - every asked b measured within max(0.15, 10 %) of the ask (full size; budget half the bound);
   - the Couette channel and the Poiseuille channel asking the same b (1) within 0.1 of each other;
+  - the channel drawn as an image mask (a geometry wall, b from the mask's surface) and the planar
+    channel asking the same b within 0.1 of each other (the shared calibration cancels);
   - (information) each Poiseuille channel against its simpleFoam twin, whose partialSlip walls take the
     asked b at the same points: the mean velocities' ratio and the profiles' L2 difference; the Couette
     channel against the analytic Couette flow with the asked b (couette_twin);
@@ -30,12 +32,12 @@ from dpdfoam.plots import label, mark_walls, plt, save
 TEST_MODE = "-test" in sys.argv[1:]
 KT_BOUND = 0.01  # relative
 PEAK_BOUND = 1.2
-COUETTE_BOUND = 0.1
+SAME_ASK_BOUND = 0.1  # two channels asking the same b: Couette against Poiseuille, mask against planes
 # The test's budgets (bound: 3 budgets), from its two runs of 2026-11-29 (calibration at three gamma_L,
 # 1000 time units sampled: the wall's position +- 0.26-0.29; channels 1500): b's total error
 # 0.27-0.34, almost all the calibration's; Couette - Poiseuille 0.096-0.115 (the runs' alone). kT is
 # decided as at full size (its error 0.001 in the test).
-TEST_BUDGETS = {"b": 0.4, "couette": 0.15}
+TEST_BUDGETS = {"b": 0.4, "same": 0.15}
 
 
 def bound_of(b):
@@ -56,7 +58,7 @@ def chosen(case):
     """What dpdFoamLike's log says each wall was given: (gammaL, calibration's b error, plane offset,
     its error), one tuple per wall."""
     pattern = (r"Slip length\s*: wall \w+: slipLength \S+ from \S+: gammaL (\S+) \(b \+- (\S+) there\), "
-               r"the plane (\S+) \+- (\S+) behind")
+               r"acting (\S+) \+- (\S+) behind")
     return [tuple(float(v) for v in m) for m in re.findall(pattern, read_text(f"{case}/log.dpdFoamLike"))]
 
 
@@ -95,6 +97,37 @@ def asked_check(checks, where, asked, value, run, calibration):
                    f"{as_number(value):.3f} +- {total:.3f} (run {as_number(run):.3f}, calibration {as_number(calibration):.3f})")
 
 
+def same_ask_check(checks, what, asked, value, error, other, other_error):
+    """Two channels asking the same b agree within SAME_ASK_BOUND: the runs' errors alone (the shared
+    calibration cancels)."""
+    budget = TEST_BUDGETS["same"] if TEST_MODE else SAME_ASK_BOUND / 2
+    bound = 3 * budget if TEST_MODE else SAME_ASK_BOUND
+    checks.bounded(f"{what} asking {asked:g} within {bound:g} of each other (standard error below {budget:g})",
+                   value - other, math.hypot(error, other_error), budget, -bound, bound, f"{value:.3f} against {other:.3f}")
+
+
+def channel_rows(checks, out, sweep, kind, ask_entry, twins):
+    """Each channel of a sweep: its asked-b and near-wall checks and its results line; the rows
+    (asked, measured, total error, case, run's error)."""
+    s = read_sweep(f"{sweep}/sweep.dat")
+    rows = []
+    for k, case in enumerate(s["case"]):
+        asked = float(s[ask_entry][k])
+        value, run, calibration, walls = measured(f"{sweep}/{case}")
+        asked_check(checks, f"{kind} asking {asked:g}", asked, value, run, calibration)
+        kT, kT_err, peak = near_wall(checks, f"{kind} asking {asked:g}",
+                                     latest(f"{sweep}/{case}/postProcessing/profileBins/*/channelProfile.dat"))
+        gamma, offset = (walls[0][0], walls[0][2]) if walls else (math.nan, math.nan)
+        line = (f"{asked:8g}   {value:+.3f} +- {run:.3f}   {calibration:.3f}   {gamma:8.4f}   {offset:.3f}   "
+                f"{kT:.4f} +- {kT_err:.4f}   {peak:.3f}")
+        if twins:
+            twin, _ = read_compare(latest(f"{sweep}/{case}/postProcessing/compareFVM/*/compare.dat"))
+            line += f"   {twin['meanVelocityRatio']:.4f}   {twin['L2']:.4f} ({twin['noiseL2']:.4f})"
+        out.append(line)
+        rows.append((asked, value, math.hypot(run, calibration), f"{sweep}/{case}", run))
+    return rows
+
+
 def near_wall(checks, where, profile):
     """kT over the first cutoff of fluid at each wall, and the density's peak against the bulk's."""
     t = read_table(profile)
@@ -120,22 +153,17 @@ def main():
     cal = read_dict("calibration/slipCalibration")
     out.append(f"# calibration: gamma_L {cal['gammaL']}, b {np.round(cal['slipLength'], 3).tolist()}, the wall acting "
                f"{cal['wallOffset']:.3f} +- {cal['wallOffsetError']:.3f} in front of its plane")
-    out.append("# asked b   measured b +- run  calibration   gamma_L  plane behind the point   kT near walls  density peak"
+    out.append("# asked b   measured b +- run  calibration   gamma_L  acting behind the wall   kT near walls  density peak"
                "   the simpleFoam twin with the asked b: mean velocity DPD / FVM, L2 (its noise part)")
-    s = read_sweep("sweepPoiseuille/sweep.dat")
-    rows = []
-    for k, case in enumerate(s["case"]):
-        asked = float(s["walls/lower/slipLength"][k])
-        value, run, calibration, walls = measured(f"sweepPoiseuille/{case}")
-        asked_check(checks, f"Poiseuille asking {asked:g}", asked, value, run, calibration)
-        kT, kT_err, peak = near_wall(checks, f"Poiseuille asking {asked:g}",
-                                     latest(f"sweepPoiseuille/{case}/postProcessing/profileBins/*/channelProfile.dat"))
-        gamma, offset = (walls[0][0], walls[0][2]) if walls else (math.nan, math.nan)
-        twin, _ = read_compare(latest(f"sweepPoiseuille/{case}/postProcessing/compareFVM/*/compare.dat"))
-        out.append(f"{asked:8g}   {value:+.3f} +- {run:.3f}   {calibration:.3f}   {gamma:8.4f}   {offset:.3f}   "
-                   f"{kT:.4f} +- {kT_err:.4f}   {peak:.3f}   {twin['meanVelocityRatio']:.4f}   {twin['L2']:.4f} "
-                   f"({twin['noiseL2']:.4f})")
-        rows.append((asked, value, math.hypot(run, calibration), f"sweepPoiseuille/{case}", run))
+    rows = channel_rows(checks, out, "sweepPoiseuille", "Poiseuille", "walls/lower/slipLength", True)
+    out.append("# the channel drawn as an image mask (one geometry wall, b from the mask's surface; no simpleFoam twin):")
+    mask_rows = channel_rows(checks, out, "sweepMask", "Mask channel", "walls/channel/slipLength", False)
+    for asked_b, mv, _, _, me in mask_rows:
+        same = [r for r in rows if r[0] == asked_b]
+        if not same:
+            checks.fail(f"a planar Poiseuille channel asking the mask channel's {asked_b:g}")
+        for _, pv, _, _, pe in same:
+            same_ask_check(checks, "the mask channel and the planar channel", asked_b, mv, me, pv, pe)
     value, run, calibration, _ = measured("couette")
     asked = float(re.search(r"slipLength\s+(\S+);", read_text("couette/constant/dpdProperties")).group(1))
     asked_check(checks, f"Couette asking {asked:g}", asked, value, run, calibration)
@@ -148,19 +176,14 @@ def main():
     if not same:
         checks.fail(f"a Poiseuille channel asking the Couette channel's {asked:g}")
     for _, pv, _, _, pe in same:
-        budget = TEST_BUDGETS["couette"] if TEST_MODE else COUETTE_BOUND / 2
-        bound = 3 * budget if TEST_MODE else COUETTE_BOUND
-        # The shared calibration cancels: the runs' errors alone.
-        checks.bounded(f"Couette and Poiseuille asking {asked:g} within {bound:g} of each other (standard error below "
-                       f"{budget:g})", value - pv, math.hypot(run, pe), budget, -bound, bound,
-                       f"{value:.3f} against {pv:.3f}")
+        same_ask_check(checks, "Couette and Poiseuille", asked, value, run, pv, pe)
     write_results("results.dat", out, checks)
-    draw(rows, (asked, value, math.hypot(run, calibration)))
+    draw(rows, mask_rows, (asked, value, math.hypot(run, calibration)))
     print("Written slipLength.png and results.dat")
     return checks.status()
 
 
-def draw(rows, couette):
+def draw(rows, mask_rows, couette):
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
     asked = np.array([r[0] for r in rows])
     top = max(asked.max(), 1.0) * 1.1
@@ -169,6 +192,8 @@ def draw(rows, couette):
                        label="max(0.15, 10 %) of the ask")
     ax[0].plot(grid, grid, "k-", lw=0.8)
     ax[0].errorbar(asked, [r[1] for r in rows], [r[2] for r in rows], fmt="o", label="Poiseuille")
+    ax[0].errorbar([r[0] for r in mask_rows], [r[1] for r in mask_rows], [r[2] for r in mask_rows], fmt="^",
+                   label="Poiseuille, image mask")
     ax[0].errorbar([couette[0]], [couette[1]], [couette[2]], fmt="s", label="Couette")
     label(ax[0], "asked against measured", "asked b", "measured b (from the wall's point)", 8)
     for asked_b, _, _, case, _ in rows:
