@@ -27,7 +27,7 @@ const char* kHowToCalibrate =
     "to make one, run etc/calibrateWall (a Couette and a Poiseuille sweep of gammaL in this fluid and wall "
     "model, then hydrodynamicWall -calibration FILE on them; tutorials/channel/slipLength/Allrun uses it), then "
     "put FILE in the case's constant/slipCalibration or in the user's cache ($DPD_SLIP_CALIBRATIONS, else "
-    "~/.cache/dpdFoamLike/slipCalibrations)";
+    "~/.cache/dpdFoamLike/slipCalibrations); the project's own are in $DPD_PROJECT_DIR/etc/slipCalibrations";
 
 }  // namespace
 

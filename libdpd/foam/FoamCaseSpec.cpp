@@ -34,24 +34,34 @@ Box readMeshBox(const Dictionary& dict, const MakeFoamCaseInput& in, int dpdDime
     return box;
 }
 
-// A geometry wall asking for a slip length: its twin would need partialSlip on the staircase of the
-// mesh's solid cells (docs/walls.md 3.9), not made yet; refused rather than given no slip.
-void refuseGeometrySlip(const Dictionary& dpdProperties) {
-    if (!dpdProperties.found("walls") || !dpdProperties.isDict("walls")) return;
+// The slip length the geometry wall asks for (docs/walls.md 3.9), for the solidWalls patch.
+double geometryWallSlip(const Dictionary& dpdProperties) {
+    if (!dpdProperties.found("walls") || !dpdProperties.isDict("walls")) return 0.0;
     const Dictionary& walls = dpdProperties.subDict("walls");
-    for (const std::string& name : walls.keys()) {
-        if (!walls.isDict(name)) continue;
-        const Dictionary& w = walls.subDict(name);
-        if (w.getOrDefault<std::string>("type", "plane") == "geometry" && w.found("slipLength"))
-            w.fail("slipLength", "the continuum twin of a geometry wall has no slip yet (makeFoamCase makes its walls "
-                                 "no-slip): compare with the planar walls' twin, or drop compareFVM for this case");
+    for (const std::string& name : walls.keys())
+        if (walls.isDict(name) && walls.subDict(name).getOrDefault<std::string>("type", "plane") == "geometry" &&
+            walls.subDict(name).found("slipLength"))
+            return walls.subDict(name).getNonNegative<double>("slipLength");
+    return 0.0;
+}
+
+// partialSlip's valueFraction (h/2) / (b + h/2) is one number over the staircase: its faces must all
+// lie h/2 from their cells' centres, the same h along every axis the mesh resolves.
+void checkSlipStaircase(const Dictionary& dict, const FoamCaseSpec& s) {
+    double h = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        if (s.cells[a] <= 1) continue;
+        if (h == 0.0) h = s.cellSize(a);
+        else if (std::abs(s.cellSize(a) - h) > 1e-9 * h)
+            dict.fail(dict.found("cells") ? "cells" : "cellSize",
+                      "the geometry wall asks for a slip length: its partialSlip staircase needs cells of one size along "
+                      "every resolved axis (one valueFraction (h/2) / (b + h/2))");
     }
 }
 
 // The two planar walls facing each other along one axis (none is fine: a periodic box).
 void readWalls(const Dictionary& dpdProperties, const DpdModel& model, FoamCaseSpec& s) {
     const std::vector<const PlanarWallSettings*> walls = model.planes();
-    refuseGeometrySlip(dpdProperties);
     if (walls.empty()) return;  // a geometry's walls are the geometry block's (readGeometry)
     if (walls.size() != 2)
         dpdProperties.fail("walls", "the continuum case takes no walls or two planar walls facing each other, found " +
@@ -273,7 +283,11 @@ FoamCaseSpec makeFoamCaseSpec(const Dictionary& dict, const Dictionary& dpdPrope
     s.maxIterations = dict.getOrDefault<int>("maxIterations", 20000);
     if (s.maxIterations < 1) dict.fail("maxIterations", "must be positive");
     s.residual = dict.found("residual") ? dict.getPositive<double>("residual") : 1e-12;
-    if (hasGeometry) markSolidCells(dpdProperties, in.caseDir, s.dpdBox, model.cutoff, s);
+    if (hasGeometry) {
+        markSolidCells(dpdProperties, in.caseDir, s.dpdBox, model.cutoff, s);
+        s.solidWallSlip = geometryWallSlip(dpdProperties);
+        if (s.solidWallSlip > 0.0) checkSlipStaircase(dict, s);
+    }
     return s;
 }
 

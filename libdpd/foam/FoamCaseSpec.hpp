@@ -25,7 +25,10 @@
 // axis where nothing varies (no geometry) it has one cell: the exact solution is uniform there, and one
 // cell keeps it exactly so (no round-off cross-flow whose normalised residual never falls). A geometry
 // block in constant/dpdProperties (image mask, gmsh) marks the cells whose centres are solid; the case's
-// Allrun removes them (topoSet + subsetMesh, the exposed faces becoming the wall patch solidWalls).
+// Allrun removes them (topoSet + subsetMesh, the exposed faces becoming the wall patch solidWalls), whose
+// slip is the b the geometry wall asks for: partialSlip on the staircase of cell faces (cells of one
+// size along every axis the mesh resolves; a curved wall's staircase converges to it under refinement
+// only, docs/walls.md 3.9).
 #include "core/Box.hpp"
 
 #include <Eigen/Core>
@@ -65,6 +68,8 @@ struct FoamCaseSpec {
     Eigen::Vector3d g{0, 0, 0};             // body force per unit mass
     std::vector<FoamLine> lines;
     std::vector<std::size_t> solidCells;    // blockMesh cell labels (i + nx (j + ny k)) to remove
+    double solidWallSlip = 0.0;             // the Navier slip length of the solidWalls patch (a geometry
+                                            // wall's slipLength, docs/walls.md 3.9); 0: no slip
     std::string geometrySource;             // the mask or gmsh file, when there is one
     int maxIterations = 20000;
     double residual = 1e-12;

@@ -70,8 +70,20 @@ std::string boundaryField(const FoamCaseSpec& s, bool velocity) {
     for (int a = 0; a < 3; ++a)
         if (s.isPeriodic(a)) os << "    \"periodic" << axisUpper(a) << ".*\"\n    {\n        type            cyclic;\n    }\n";
     if (s.dimension == 2) os << "    frontAndBack\n    {\n        type            empty;\n    }\n";
-    if (!s.solidCells.empty())
-        os << "    solidWalls\n    {\n        type            " << (velocity ? "noSlip" : "zeroGradient") << ";\n    }\n";
+    if (!s.solidCells.empty()) {
+        os << "    solidWalls\n    {\n";
+        if (velocity && s.solidWallSlip > 0.0) {
+            int resolved = 0;  // the cells are of one size along every resolved axis (FoamCaseSpec)
+            while (resolved < 2 && s.cells[resolved] <= 1) ++resolved;
+            const double h = s.cellSize(resolved);
+            os << "        type            partialSlip;    // Navier slip length " << num(s.solidWallSlip)
+               << " on the staircase: f = (h/2) / (beta + h/2)\n        valueFraction   uniform "
+               << num(partialSlipValueFraction(s.solidWallSlip, h)) << ";\n        value           uniform (0 0 0);\n";
+        } else {
+            os << "        type            " << (velocity ? "noSlip" : "zeroGradient") << ";\n";
+        }
+        os << "    }\n";
+    }
     os << "}\n";
     return os.str();
 }
@@ -133,7 +145,11 @@ std::string allrun(const FoamCaseSpec& s) {
         "run blockMesh\n";
     if (!s.solidCells.empty())
         text += "run topoSet\n"
-                "run subsetMesh fluid -patch solidWalls -overwrite\n";
+                "# subsetMesh maps the fields and leaves the faces it exposes without values of their own (a\n"
+                "# partialSlip's valueFraction among them): the fields as written, all uniform, are read afresh.\n"
+                "rm -rf 0.orig && cp -r 0 0.orig\n"
+                "run subsetMesh fluid -patch solidWalls -overwrite\n"
+                "rm -rf 0 && mv 0.orig 0\n";
     text += "run simpleFoam\n"
             "grep -q 'SIMPLE solution converged' log.simpleFoam || "
             "echo \"Allrun: warning: simpleFoam stopped at endTime before reaching residualControl\" >&2\n"

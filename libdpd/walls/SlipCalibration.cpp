@@ -194,19 +194,33 @@ SlipCalibration findSlipCalibration(const std::vector<std::string>& files, const
                              (tried.empty() ? std::string(" (no calibration file found)") : ":" + tried));
 }
 
+namespace {
+
+// The regular files of a directory, in name order (none when it is not one).
+std::vector<std::string> filesIn(const std::filesystem::path& dir) {
+    namespace fs = std::filesystem;
+    std::vector<std::string> files;
+    std::error_code error;
+    if (dir.empty() || !fs::is_directory(dir, error)) return files;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, error))
+        if (e.is_regular_file()) files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+}  // namespace
+
 std::vector<std::string> slipCalibrationFiles(const std::string& caseDir) {
     namespace fs = std::filesystem;
     std::vector<std::string> files{(fs::path(caseDir) / "constant" / "slipCalibration").string()};
     fs::path cache;
     if (const char* dir = std::getenv("DPD_SLIP_CALIBRATIONS"); dir && *dir) cache = dir;
     else if (const char* home = std::getenv("HOME"); home && *home) cache = fs::path(home) / ".cache" / "dpdFoamLike" / "slipCalibrations";
-    std::error_code error;
-    if (cache.empty() || !fs::is_directory(cache, error)) return files;
-    std::vector<std::string> cached;
-    for (const fs::directory_entry& e : fs::directory_iterator(cache, error))
-        if (e.is_regular_file()) cached.push_back(e.path().string());
-    std::sort(cached.begin(), cached.end());
-    files.insert(files.end(), cached.begin(), cached.end());
+    for (const std::string& f : filesIn(cache)) files.push_back(f);
+    // The calibrations the project ships, made by its tutorials' Allruns (etc/slipCalibrations/README).
+    if (const char* project = std::getenv("DPD_PROJECT_DIR"); project && *project)
+        for (const std::string& f : filesIn(fs::path(project) / "etc" / "slipCalibrations"))
+            if (fs::path(f).filename() != "README") files.push_back(f);
     return files;
 }
 

@@ -101,7 +101,7 @@ SlipCalibration findSlipCalibration(const std::vector<std::string>& files, const
 
 // Where calibrations are looked for: the case's constant/slipCalibration, then every file of the
 // user's cache directory ($DPD_SLIP_CALIBRATIONS, else $HOME/.cache/dpdFoamLike/slipCalibrations), in
-// name order.
+// name order, then those the project ships ($DPD_PROJECT_DIR/etc/slipCalibrations, but its README).
 std::vector<std::string> slipCalibrationFiles(const std::string& caseDir);
 
 }  // namespace dpd

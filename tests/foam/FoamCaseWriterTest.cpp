@@ -169,9 +169,10 @@ TEST_F(FoamCase, SolidCellsAreThoseWhoseCentresLieInTheMask) {
     EXPECT_TRUE(s.isPeriodic(0) && s.isPeriodic(2));
 }
 
-// A geometry wall asking for a slip length (docs/walls.md 3.9) has no continuum twin with slip yet: refused
-// at its slipLength, not given no-slip walls. The case holds a calibration, so that the wall itself reads.
-TEST_F(FoamCase, AGeometryWallAskingASlipLengthIsRefused) {
+// A geometry wall asking for a slip length (docs/walls.md 3.9): its twin's solidWalls take the same b
+// as partialSlip on the staircase, valueFraction (h/2) / (b + h/2); cells of two sizes are refused. The
+// case holds a calibration, so that the wall itself reads.
+TEST_F(FoamCase, AGeometryWallsSlipLengthGoesToTheStaircase) {
     geometryTest::writePgm((dir / "constant/geometry/mask.pgm").string(),
                            {{0, 0, 0, 0}, {255, 255, 255, 255}, {255, 255, 255, 255}, {0, 0, 0, 0}});
     geometryTest::writeText((dir / "system/controlDict").string(), "deltaT 0.01;\n");
@@ -187,13 +188,16 @@ TEST_F(FoamCase, AGeometryWallAskingASlipLengthIsRefused) {
                   "geometry { type imageMask; file \"constant/geometry/mask.pgm\"; solidValues (0); pixelSize 1; extrudeAxis y; }\n"
                   "walls { channel { type geometry; slipLength 1; tunableSlip { zc 1; epsilon 1; sigma 0.5; "
                   "fluidBehind { a 25; density 3; } } } }\n";
-    try {
-        spec("box { min (0 0 0); max (4 1 4); } nu 1; cellSize 0.5;", props);
-        ADD_FAILURE() << "a geometry wall asking for a slip length got a twin";
-    } catch (const dpd::InputError& e) {
-        EXPECT_EQ(e.keyword(), "slipLength") << e.what();
-        EXPECT_NE(std::string(e.what()).find("continuum twin of a geometry wall has no slip"), std::string::npos) << e.what();
-    }
+    const dpd::FoamCaseSpec s = spec("box { min (0 0 0); max (4 1 4); } nu 1; cellSize 0.5;", props);
+    EXPECT_EQ(s.solidWallSlip, 1.0);
+    EXPECT_FALSE(s.solidCells.empty());
+    const std::string u = dpd::foamVelocityField(s);
+    const std::size_t walls = u.find("solidWalls");
+    ASSERT_NE(walls, std::string::npos) << u;
+    EXPECT_NE(u.find("type            partialSlip;", walls), std::string::npos) << u;
+    // h = 0.5: (0.25) / (1 + 0.25) = 0.2.
+    EXPECT_NE(u.find("valueFraction   uniform 0.2;", walls), std::string::npos) << u;
+    expectRefused("box { min (0 0 0); max (4 1 4); } nu 1; cells (8 1 4);", props, "makeFoamCaseDict", "cells");
     ::unsetenv("DPD_SLIP_CALIBRATIONS");
 }
 

@@ -11,6 +11,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
 
 using namespace dpd;
 namespace fs = std::filesystem;
@@ -101,7 +104,23 @@ TEST(SlipCalibration, AFileWithListsOfDifferentLengthsIsAnInputErrorAtTheList) {
     EXPECT_NE(message.find("one error per gammaL"), std::string::npos) << message;
 }
 
+// Sets an environment variable for the scope (unset: nullptr), restoring it after.
+struct ScopedEnvironment {
+    std::string name;
+    std::optional<std::string> before;
+    ScopedEnvironment(std::string n, const char* value) : name(std::move(n)) {
+        if (const char* v = std::getenv(name.c_str())) before = v;
+        if (value) ::setenv(name.c_str(), value, 1);
+        else ::unsetenv(name.c_str());
+    }
+    ~ScopedEnvironment() {
+        if (before) ::setenv(name.c_str(), before->c_str(), 1);
+        else ::unsetenv(name.c_str());
+    }
+};
+
 TEST(SlipCalibration, IsFoundInTheCaseOrTheCacheByItsKey) {
+    const ScopedEnvironment noProject("DPD_PROJECT_DIR", nullptr);  // its shipped calibrations come last (below)
     TempDir dir;
     fs::create_directories(dir.path / "case" / "constant");
     fs::create_directories(dir.path / "cache");
@@ -131,6 +150,24 @@ TEST(SlipCalibration, IsFoundInTheCaseOrTheCacheByItsKey) {
         EXPECT_NE(what.find(files[0].first.string() + ": fluid/a 25 against 0"), std::string::npos) << what;
         EXPECT_NE(what.find(files[1].first.string() + ": fluid/kT 1.5 against 1"), std::string::npos) << what;
     }
+}
+
+// The project's shipped calibrations ($DPD_PROJECT_DIR/etc/slipCalibrations) come after the case's and the
+// user's, in name order, their README left out.
+TEST(SlipCalibration, TheProjectsShippedCalibrationsComeLast) {
+    TempDir dir;
+    const fs::path shipped = dir.path / "project" / "etc" / "slipCalibrations";
+    fs::create_directories(shipped);
+    fs::create_directories(dir.path / "cache");
+    for (const char* name : {"standardFluid", "README", "idealGas"}) std::ofstream(shipped / name) << "\n";
+    std::ofstream(dir.path / "cache" / "mine") << "\n";
+    const ScopedEnvironment project("DPD_PROJECT_DIR", (dir.path / "project").c_str());
+    const ScopedEnvironment cache("DPD_SLIP_CALIBRATIONS", (dir.path / "cache").c_str());
+    const std::vector<std::string> searched = slipCalibrationFiles((dir.path / "case").string());
+    const std::vector<std::string> expected{(dir.path / "case" / "constant" / "slipCalibration").string(),
+                                            (dir.path / "cache" / "mine").string(), (shipped / "idealGas").string(),
+                                            (shipped / "standardFluid").string()};
+    EXPECT_EQ(searched, expected);
 }
 
 TEST(SlipCalibration, GivesSlipsBelowItsRangeByMovingTheStiffestWallOut) {

@@ -10,8 +10,8 @@ within its bound (fixed, never widened by the run's error):
   - the Couette channel and the Poiseuille channel asking the same b (1) within 0.1 of each other;
   - the channel drawn as an image mask (a geometry wall, b from the mask's surface) and the planar
     channel asking the same b within 0.1 of each other (the shared calibration cancels);
-  - (information) each Poiseuille channel against its simpleFoam twin, whose partialSlip walls take the
-    asked b at the same points: the mean velocities' ratio and the profiles' L2 difference; the Couette
+  - (information) each Poiseuille channel (planes or mask) against its simpleFoam twin, whose partialSlip
+    walls take the asked b at the same places: the mean velocities' ratio and the profiles' L2 difference; the Couette
     channel against the analytic Couette flow with the asked b (couette_twin);
   - near the walls the fluid stays the fluid: kT within 1 % of the set value over the first cutoff of
     fluid, the density's peak at most 1.2 times the bulk's (every channel).
@@ -106,9 +106,9 @@ def same_ask_check(checks, what, asked, value, error, other, other_error):
                    value - other, math.hypot(error, other_error), budget, -bound, bound, f"{value:.3f} against {other:.3f}")
 
 
-def channel_rows(checks, out, sweep, kind, ask_entry, twins):
-    """Each channel of a sweep: its asked-b and near-wall checks and its results line; the rows
-    (asked, measured, total error, case, run's error)."""
+def channel_rows(checks, out, sweep, kind, ask_entry):
+    """Each channel of a sweep: its asked-b and near-wall checks and its results line (with its simpleFoam
+    twin); the rows (asked, measured, total error, case, run's error)."""
     s = read_sweep(f"{sweep}/sweep.dat")
     rows = []
     for k, case in enumerate(s["case"]):
@@ -118,12 +118,10 @@ def channel_rows(checks, out, sweep, kind, ask_entry, twins):
         kT, kT_err, peak = near_wall(checks, f"{kind} asking {asked:g}",
                                      latest(f"{sweep}/{case}/postProcessing/profileBins/*/channelProfile.dat"))
         gamma, offset = (walls[0][0], walls[0][2]) if walls else (math.nan, math.nan)
-        line = (f"{asked:8g}   {value:+.3f} +- {run:.3f}   {calibration:.3f}   {gamma:8.4f}   {offset:.3f}   "
-                f"{kT:.4f} +- {kT_err:.4f}   {peak:.3f}")
-        if twins:
-            twin, _ = read_compare(latest(f"{sweep}/{case}/postProcessing/compareFVM/*/compare.dat"))
-            line += f"   {twin['meanVelocityRatio']:.4f}   {twin['L2']:.4f} ({twin['noiseL2']:.4f})"
-        out.append(line)
+        twin, _ = read_compare(latest(f"{sweep}/{case}/postProcessing/compareFVM/*/compare.dat"))
+        out.append(f"{asked:8g}   {value:+.3f} +- {run:.3f}   {calibration:.3f}   {gamma:8.4f}   {offset:.3f}   "
+                   f"{kT:.4f} +- {kT_err:.4f}   {peak:.3f}   {twin['meanVelocityRatio']:.4f}   {twin['L2']:.4f} "
+                   f"({twin['noiseL2']:.4f})")
         rows.append((asked, value, math.hypot(run, calibration), f"{sweep}/{case}", run))
     return rows
 
@@ -155,9 +153,10 @@ def main():
                f"{cal['wallOffset']:.3f} +- {cal['wallOffsetError']:.3f} in front of its plane")
     out.append("# asked b   measured b +- run  calibration   gamma_L  acting behind the wall   kT near walls  density peak"
                "   the simpleFoam twin with the asked b: mean velocity DPD / FVM, L2 (its noise part)")
-    rows = channel_rows(checks, out, "sweepPoiseuille", "Poiseuille", "walls/lower/slipLength", True)
-    out.append("# the channel drawn as an image mask (one geometry wall, b from the mask's surface; no simpleFoam twin):")
-    mask_rows = channel_rows(checks, out, "sweepMask", "Mask channel", "walls/channel/slipLength", False)
+    rows = channel_rows(checks, out, "sweepPoiseuille", "Poiseuille", "walls/lower/slipLength")
+    out.append("# the channel drawn as an image mask (one geometry wall, b from the mask's surface; its twin's partialSlip "
+               "on the mesh's staircase of solid cells, flat here):")
+    mask_rows = channel_rows(checks, out, "sweepMask", "Mask channel", "walls/channel/slipLength")
     for asked_b, mv, _, _, me in mask_rows:
         same = [r for r in rows if r[0] == asked_b]
         if not same:
