@@ -48,11 +48,9 @@ double geometryWallSlip(const Dictionary& dpdProperties) {
 // partialSlip's valueFraction (h/2) / (b + h/2) is one number over the staircase: its faces must all
 // lie h/2 from their cells' centres, the same h along every axis the mesh resolves.
 void checkSlipStaircase(const Dictionary& dict, const FoamCaseSpec& s) {
-    double h = 0.0;
+    const double h = s.staircaseCellSize();
     for (int a = 0; a < 3; ++a) {
-        if (s.cells[a] <= 1) continue;
-        if (h == 0.0) h = s.cellSize(a);
-        else if (std::abs(s.cellSize(a) - h) > 1e-9 * h)
+        if (s.cells[a] > 1 && std::abs(s.cellSize(a) - h) > 1e-9 * h)
             dict.fail(dict.found("cells") ? "cells" : "cellSize",
                       "the geometry wall asks for a slip length: its partialSlip staircase needs cells of one size along "
                       "every resolved axis (one valueFraction (h/2) / (b + h/2))");

@@ -27,8 +27,8 @@
 // block in constant/dpdProperties (image mask, gmsh) marks the cells whose centres are solid; the case's
 // Allrun removes them (topoSet + subsetMesh, the exposed faces becoming the wall patch solidWalls), whose
 // slip is the b the geometry wall asks for: partialSlip on the staircase of cell faces (cells of one
-// size along every axis the mesh resolves; a curved wall's staircase converges to it under refinement
-// only, docs/walls.md 3.9).
+// size along every axis the mesh resolves). A staircase along a curved wall does not converge to the
+// smooth wall's slip under refinement (docs/walls.md 3.9).
 #include "core/Box.hpp"
 
 #include <Eigen/Core>
@@ -77,6 +77,13 @@ struct FoamCaseSpec {
 
     bool isPeriodic(int axis) const { return axis != wallAxis && !(dimension == 2 && axis == 1); }
     double cellSize(int axis) const { return (hi[axis] - lo[axis]) / cells[axis]; }
+    // The cell size along the first axis with more than one cell: the staircase's h (a slipping
+    // staircase has cells of that size along every such axis).
+    double staircaseCellSize() const {
+        int a = 0;
+        while (a < 2 && cells[a] <= 1) ++a;
+        return cellSize(a);
+    }
     Eigen::Vector3d cellCentre(int i, int j, int k) const {
         return lo + Eigen::Vector3d((i + 0.5) * cellSize(0), (j + 0.5) * cellSize(1), (k + 0.5) * cellSize(2));
     }

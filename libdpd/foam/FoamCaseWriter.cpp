@@ -73,9 +73,7 @@ std::string boundaryField(const FoamCaseSpec& s, bool velocity) {
     if (!s.solidCells.empty()) {
         os << "    solidWalls\n    {\n";
         if (velocity && s.solidWallSlip > 0.0) {
-            int resolved = 0;  // the cells are of one size along every resolved axis (FoamCaseSpec)
-            while (resolved < 2 && s.cells[resolved] <= 1) ++resolved;
-            const double h = s.cellSize(resolved);
+            const double h = s.staircaseCellSize();
             os << "        type            partialSlip;    // Navier slip length " << num(s.solidWallSlip)
                << " on the staircase: f = (h/2) / (beta + h/2)\n        valueFraction   uniform "
                << num(partialSlipValueFraction(s.solidWallSlip, h)) << ";\n        value           uniform (0 0 0);\n";

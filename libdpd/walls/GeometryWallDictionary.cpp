@@ -42,9 +42,7 @@ std::unique_ptr<Wall> readGeometryWall(const Dictionary& d, const WallReadContex
     for (const std::string& k : wallRuleKeys()) keys.push_back(k);
     d.checkKeys(keys);
     if (!c.geometry) d.fail("type", "a geometry wall needs the geometry block it acts on (constant/dpdProperties' geometry)");
-    if (d.found("slipLength") && !d.found("tunableSlip"))
-        d.fail("slipLength", "needs the wall's model: tunableSlip { zc ...; epsilon ...; sigma ...; } (gammaL comes from "
-                             "the slip calibration)");
+    requireSlipModel(d);
     if (!d.found("tunableSlip"))
         return std::make_unique<Wall>(c.name, std::make_shared<GeometryShape>(c.geometry), readWallRule(d, "bounceBack", c.cutoff));
     TunableSlipParameters model;

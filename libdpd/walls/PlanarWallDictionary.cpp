@@ -36,9 +36,7 @@ TunableSlipStripes readStripes(const Dictionary& sd, const PlanarWallSettings& w
 // slipLength b; (docs/walls.md 3.8): gammaL and the plane's offset behind `point` from the calibration
 // of the case's fluid and of the wall's model (its tunableSlip block).
 void resolvePlanarSlipLength(const Dictionary& wd, const WallReadContext& c, PlanarWallSettings& w) {
-    if (!w.hasTunableSlip)
-        wd.fail("slipLength", "needs the wall's model: tunableSlip { zc ...; epsilon ...; sigma ...; } (gammaL comes from "
-                              "the slip calibration)");
+    requireSlipModel(wd);
     if (w.hasStripes) wd.subDict("tunableSlip").fail("stripes", "a wall that asks for a slipLength is uniform");
     const CalibratedWall chosen = resolveSlipLength(wd, c, w.tunableSlip, w.slipLength);
     w.tunableSlip.gammaL = chosen.gammaL;

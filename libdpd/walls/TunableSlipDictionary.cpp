@@ -32,6 +32,12 @@ TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff, bool 
     return t;
 }
 
+void requireSlipModel(const Dictionary& wd) {
+    if (wd.found("slipLength") && !wd.found("tunableSlip"))
+        wd.fail("slipLength", "needs the wall's model: tunableSlip { zc ...; epsilon ...; sigma ...; } (gammaL comes from "
+                              "the slip calibration)");
+}
+
 CalibratedWall resolveSlipLength(const Dictionary& wd, const WallReadContext& c, const TunableSlipParameters& model,
                                  double b) {
     if (!c.slipLengths) wd.fail("slipLength", "is resolved against the case's slip calibration: read it with its case");

@@ -17,6 +17,10 @@ struct WallReadContext;
 // Stripes are the planar wall's to read (the key is allowed here).
 TunableSlipParameters readTunableSlip(const Dictionary& td, double cutoff, bool asksSlipLength);
 
+// A wall that asks for a slip length gives its model (the tunableSlip block, without gammaL): an
+// InputError on its slipLength keyword otherwise.
+void requireSlipModel(const Dictionary& wd);
+
 // The friction and the offset behind the wall's surface that give the slip length b of a wall of this
 // model (its gammaL unused), from the case's calibration (c.slipLengths); the choice is added to the
 // log's notes. A failure is an InputError on the wall's slipLength keyword.

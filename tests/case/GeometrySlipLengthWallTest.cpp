@@ -25,12 +25,7 @@ const std::string kModel = "tunableSlip { zc 1; epsilon 1; sigma 0.5; fluidBehin
 
 // Box x 0..8, y 0..3, z 0..8; a 16 x 16 mask of 0.5 pixels whose top and bottom three rows are solid:
 // the geometry's surfaces at z = 1.5 and 6.5.
-Picture channel() {
-    Picture pic(16, std::vector<int>(16, 255));
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 16; ++c) pic[r][c] = pic[15 - r][c] = 0;
-    return pic;
-}
+Picture channel() { return channelPicture(16, 3); }
 
 std::string properties(const std::string& wall) {
     return "dimension 3; kT 1; seed 5;\nspecies { fluid { frozen no; } }\npairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n"

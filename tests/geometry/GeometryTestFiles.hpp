@@ -33,6 +33,15 @@ inline dpd::Box box2d(double lx, double lz) {
 // rows[0] is the top row of the picture; grey levels 0..255.
 using Picture = std::vector<std::vector<int>>;
 
+// A square picture of n x n pixels, fluid (255) but for its top and bottom solidRows rows (0): a channel
+// along the columns' axis between two solid walls.
+inline Picture channelPicture(int n, int solidRows) {
+    Picture pic(n, std::vector<int>(n, 255));
+    for (int r = 0; r < solidRows; ++r)
+        for (int c = 0; c < n; ++c) pic[r][c] = pic[n - 1 - r][c] = 0;
+    return pic;
+}
+
 inline void writeText(const std::string& path, const std::string& text) {
     fs::create_directories(fs::path(path).parent_path());
     std::ofstream(path) << text;

@@ -23,12 +23,7 @@ namespace {
 // 3-D box x 0..8, y 0..3, z 0..8; a 16 x 16 mask of 0.5 pixels extruded along y whose top and
 // bottom three rows are solid: walls 1.5 thick at z < 1.5 and z > 6.5 (so the solid is 3 thick
 // across the periodic boundary and its middle lies deeper than one cutoff).
-Picture channel(int solidRows) {
-    Picture pic(16, std::vector<int>(16, 255));
-    for (int r = 0; r < solidRows; ++r)
-        for (int c = 0; c < 16; ++c) pic[r][c] = pic[15 - r][c] = 0;
-    return pic;
-}
+Picture channel(int solidRows) { return channelPicture(16, solidRows); }
 
 std::string properties(const std::string& extra) {
     return "dimension 3; kT 1; seed 5;\n"
