@@ -8,6 +8,7 @@
 #include "case/DpdProperties.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 namespace dpd {
@@ -43,18 +44,6 @@ double geometryWallSlip(const Dictionary& dpdProperties) {
             walls.subDict(name).found("slipLength"))
             return walls.subDict(name).getNonNegative<double>("slipLength");
     return 0.0;
-}
-
-// partialSlip's valueFraction (h/2) / (b + h/2) is one number over the staircase: its faces must all
-// lie h/2 from their cells' centres, the same h along every axis the mesh resolves.
-void checkSlipStaircase(const Dictionary& dict, const FoamCaseSpec& s) {
-    const double h = s.staircaseCellSize();
-    for (int a = 0; a < 3; ++a) {
-        if (s.cells[a] > 1 && std::abs(s.cellSize(a) - h) > 1e-9 * h)
-            dict.fail(dict.found("cells") ? "cells" : "cellSize",
-                      "the geometry wall asks for a slip length: its partialSlip staircase needs cells of one size along "
-                      "every resolved axis (one valueFraction (h/2) / (b + h/2))");
-    }
 }
 
 // The two planar walls facing each other along one axis (none is fine: a periodic box).
@@ -223,21 +212,60 @@ void readLines(const Dictionary& dict, FoamCaseSpec& s) {
     }
 }
 
+// A point of the mesh as the geometry reads it (a 2-D box's geometry lies in y = 0).
+Eigen::Vector3d geometryPoint(Eigen::Vector3d r, const Box& box) {
+    if (box.dimension == 2) r.y() = 0.0;
+    return r;
+}
+
+// Every face between a fluid and a solid cell inside the block (faces across a periodic side stay the
+// cyclic patch's), slipping by b times the staircase's length per unit of wall, |n|_1 with n the
+// geometry's normal at the face: flow along the faces then meets the smooth wall's friction.
+void findStaircaseFaces(const SolidGeometry& geometry, const Box& box, const std::vector<std::uint8_t>& solid,
+                        FoamCaseSpec& s) {
+    const auto label = [&](const std::array<int, 3>& c) {
+        return (static_cast<std::size_t>(c[2]) * s.cells[1] + c[1]) * s.cells[0] + c[0];
+    };
+    const double reach = 2.0 * s.cellSize(0) + 2.0 * s.cellSize(1) + 2.0 * s.cellSize(2);
+    for (int k = 0; k < s.cells[2]; ++k)
+        for (int j = 0; j < s.cells[1]; ++j)
+            for (int i = 0; i < s.cells[0]; ++i) {
+                const std::array<int, 3> cell{i, j, k};
+                if (solid[label(cell)]) continue;
+                for (int a = 0; a < 3; ++a)
+                    for (int side : {-1, 1}) {
+                        std::array<int, 3> next = cell;
+                        next[a] += side;
+                        if (next[a] < 0 || next[a] >= s.cells[a] || !solid[label(next)]) continue;
+                        Eigen::Vector3d centre = s.cellCentre(i, j, k);
+                        centre[a] += 0.5 * side * s.cellSize(a);
+                        const Eigen::Vector3d n = geometry.signedDistance(geometryPoint(centre, box), reach).normal;
+                        StaircaseFace face;
+                        for (int c = 0; c < 3; ++c) face.halfCells[c] = 2L * cell[c] + 1;
+                        face.halfCells[a] += side;
+                        face.axis = a;
+                        face.slipLength = s.solidWallSlip * (n.isZero() ? 1.0 : n.lpNorm<1>() / n.norm());
+                        s.staircaseFaces.push_back(face);
+                    }
+            }
+}
+
 void markSolidCells(const Dictionary& dpdProperties, const std::string& caseDir, const Box& box, double cutoff,
                     FoamCaseSpec& s) {
     const SolidGeometry geometry = readGeometry(dpdProperties.subDict("geometry"), caseDir, box, cutoff);
     s.geometrySource = geometry.source();
+    std::vector<std::uint8_t> solid(static_cast<std::size_t>(s.cells[0]) * s.cells[1] * s.cells[2], 0);
     for (int k = 0; k < s.cells[2]; ++k)
         for (int j = 0; j < s.cells[1]; ++j)
             for (int i = 0; i < s.cells[0]; ++i) {
-                Eigen::Vector3d c = s.cellCentre(i, j, k);
-                if (box.dimension == 2) c.y() = 0.0;
-                if (geometry.isSolid(c))
-                    s.solidCells.push_back((static_cast<std::size_t>(k) * s.cells[1] + j) * s.cells[0] + i);
+                if (!geometry.isSolid(geometryPoint(s.cellCentre(i, j, k), box))) continue;
+                const std::size_t cell = (static_cast<std::size_t>(k) * s.cells[1] + j) * s.cells[0] + i;
+                s.solidCells.push_back(cell);
+                solid[cell] = 1;
             }
-    const std::size_t total = static_cast<std::size_t>(s.cells[0]) * s.cells[1] * s.cells[2];
-    if (s.solidCells.size() == total)
+    if (s.solidCells.size() == solid.size())
         dpdProperties.fail("geometry", "every cell of the continuum mesh is solid: refine cellSize");
+    if (s.solidWallSlip > 0.0) findStaircaseFaces(geometry, box, solid, s);
 }
 
 }  // namespace
@@ -282,9 +310,8 @@ FoamCaseSpec makeFoamCaseSpec(const Dictionary& dict, const Dictionary& dpdPrope
     if (s.maxIterations < 1) dict.fail("maxIterations", "must be positive");
     s.residual = dict.found("residual") ? dict.getPositive<double>("residual") : 1e-12;
     if (hasGeometry) {
-        markSolidCells(dpdProperties, in.caseDir, s.dpdBox, model.cutoff, s);
         s.solidWallSlip = geometryWallSlip(dpdProperties);
-        if (s.solidWallSlip > 0.0) checkSlipStaircase(dict, s);
+        markSolidCells(dpdProperties, in.caseDir, s.dpdBox, model.cutoff, s);
     }
     return s;
 }

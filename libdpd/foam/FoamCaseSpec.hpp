@@ -26,9 +26,9 @@
 // cell keeps it exactly so (no round-off cross-flow whose normalised residual never falls). A geometry
 // block in constant/dpdProperties (image mask, gmsh) marks the cells whose centres are solid; the case's
 // Allrun removes them (topoSet + subsetMesh, the exposed faces becoming the wall patch solidWalls), whose
-// slip is the b the geometry wall asks for: partialSlip on the staircase of cell faces (cells of one
-// size along every axis the mesh resolves). A staircase along a curved wall does not converge to the
-// smooth wall's slip under refinement (docs/walls.md 3.9).
+// slip is the b the geometry wall asks for: partialSlip on the staircase of cell faces, each face
+// slipping by b (|n_x| + |n_y| + |n_z|), n the smooth wall's normal there, so that the staircase, longer
+// than the wall by that factor, holds the wall's friction for flow along its faces (docs/walls.md 3.9).
 #include "core/Box.hpp"
 
 #include <Eigen/Core>
@@ -47,6 +47,14 @@ struct FoamWall {
     double position = 0.0;      // along the wall axis
     Eigen::Vector3d velocity{0, 0, 0};
     double slipLength = 0.0;    // Navier slip length; 0: no slip
+};
+
+// A face of the staircase a slipping geometry wall leaves: its centre in half cells from the mesh's
+// corner (integers: 2 i + 1 at a cell's centre, 2 i at a face), and the Navier slip length it carries.
+struct StaircaseFace {
+    std::array<long, 3> halfCells{0, 0, 0};
+    int axis = 0;               // the face's normal axis
+    double slipLength = 0.0;
 };
 
 struct FoamLine {
@@ -70,6 +78,7 @@ struct FoamCaseSpec {
     std::vector<std::size_t> solidCells;    // blockMesh cell labels (i + nx (j + ny k)) to remove
     double solidWallSlip = 0.0;             // the Navier slip length of the solidWalls patch (a geometry
                                             // wall's slipLength, docs/walls.md 3.9); 0: no slip
+    std::vector<StaircaseFace> staircaseFaces;  // fluid-solid faces inside the block, when it slips
     std::string geometrySource;             // the mask or gmsh file, when there is one
     int maxIterations = 20000;
     double residual = 1e-12;
@@ -77,13 +86,6 @@ struct FoamCaseSpec {
 
     bool isPeriodic(int axis) const { return axis != wallAxis && !(dimension == 2 && axis == 1); }
     double cellSize(int axis) const { return (hi[axis] - lo[axis]) / cells[axis]; }
-    // The cell size along the first axis with more than one cell: the staircase's h (a slipping
-    // staircase has cells of that size along every such axis).
-    double staircaseCellSize() const {
-        int a = 0;
-        while (a < 2 && cells[a] <= 1) ++a;
-        return cellSize(a);
-    }
     Eigen::Vector3d cellCentre(int i, int j, int k) const {
         return lo + Eigen::Vector3d((i + 0.5) * cellSize(0), (j + 0.5) * cellSize(1), (k + 0.5) * cellSize(2));
     }

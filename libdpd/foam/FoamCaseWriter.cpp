@@ -2,6 +2,7 @@
 
 #include "core/Axis.hpp"
 #include "core/Error.hpp"
+#include "foam/StaircaseSlipScript.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Dictionary.hpp"
 
@@ -48,6 +49,16 @@ std::string periodicPatch(int axis, bool high) {
     return std::string("periodic") + axisUpper(axis) + (high ? "High" : "Low");
 }
 
+double staircaseValueFraction(const FoamCaseSpec& s, const StaircaseFace& f) {
+    return partialSlipValueFraction(f.slipLength, s.cellSize(f.axis));
+}
+
+// What the staircase's faces take until the Allrun gives each its own: a flat wall's, on the first.
+double flatWallValueFraction(const FoamCaseSpec& s) {
+    if (s.staircaseFaces.empty()) return 1.0;
+    return partialSlipValueFraction(s.solidWallSlip, s.cellSize(s.staircaseFaces.front().axis));
+}
+
 // The boundary conditions of U or p on every patch, one line each.
 std::string boundaryField(const FoamCaseSpec& s, bool velocity) {
     std::ostringstream os;
@@ -73,10 +84,10 @@ std::string boundaryField(const FoamCaseSpec& s, bool velocity) {
     if (!s.solidCells.empty()) {
         os << "    solidWalls\n    {\n";
         if (velocity && s.solidWallSlip > 0.0) {
-            const double h = s.staircaseCellSize();
             os << "        type            partialSlip;    // Navier slip length " << num(s.solidWallSlip)
-               << " on the staircase: f = (h/2) / (beta + h/2)\n        valueFraction   uniform "
-               << num(partialSlipValueFraction(s.solidWallSlip, h)) << ";\n        value           uniform (0 0 0);\n";
+               << " along the wall: each face its own f after subsetMesh (Allrun, staircaseSlip.awk)\n"
+                  "        valueFraction   uniform "
+               << num(flatWallValueFraction(s)) << ";\n        value           uniform (0 0 0);\n";
         } else {
             os << "        type            " << (velocity ? "noSlip" : "zeroGradient") << ";\n";
         }
@@ -145,9 +156,15 @@ std::string allrun(const FoamCaseSpec& s) {
         text += "run topoSet\n"
                 "# subsetMesh maps the fields and leaves the faces it exposes without values of their own (a\n"
                 "# partialSlip's valueFraction among them): the fields as written, all uniform, are read afresh.\n"
-                "rm -rf 0.orig && cp -r 0 0.orig\n"
+                "rm -rf 0.orig 0/C 0/Cx 0/Cy 0/Cz && cp -r 0 0.orig\n"
                 "run subsetMesh fluid -patch solidWalls -overwrite\n"
                 "rm -rf 0 && mv 0.orig 0\n";
+    if (!s.staircaseFaces.empty())
+        text += "# Each face of the slipping staircase its own valueFraction (constant/staircaseSlip), found by its\n"
+                "# centre: subsetMesh orders the patch's faces itself.\n"
+                "run postProcess -func writeCellCentres -time 0\n"
+                "awk -f staircaseSlip.awk constant/staircaseSlip 0/C 0/U > 0/U.staircase || exit 1\n"
+                "mv 0/U.staircase 0/U && rm -f 0/C 0/Cx 0/Cy 0/Cz\n";
     text += "run simpleFoam\n"
             "grep -q 'SIMPLE solution converged' log.simpleFoam || "
             "echo \"Allrun: warning: simpleFoam stopped at endTime before reaching residualControl\" >&2\n"
@@ -257,6 +274,19 @@ std::string foamTopoSetDict(const FoamCaseSpec& s) {
     return os.str();
 }
 
+std::string foamStaircaseSlip(const FoamCaseSpec& s) {
+    std::ostringstream os;
+    os << "// The faces of the staircase the geometry wall leaves (" << s.geometrySource << "), slipping by " << num(s.solidWallSlip)
+       << "\n// times |n|_1 of the wall's normal n there (docs/walls.md 3.9), for staircaseSlip.awk: each face's\n"
+          "// centre in half cells from the mesh's corner (origin, halfCell), its valueFraction and slip length.\n"
+       << "origin " << num(s.lo.x()) << " " << num(s.lo.y()) << " " << num(s.lo.z()) << "\n"
+       << "halfCell " << num(0.5 * s.cellSize(0)) << " " << num(0.5 * s.cellSize(1)) << " " << num(0.5 * s.cellSize(2)) << "\n";
+    for (const StaircaseFace& f : s.staircaseFaces)
+        os << f.halfCells[0] << " " << f.halfCells[1] << " " << f.halfCells[2] << " " << num(staircaseValueFraction(s, f))
+           << " " << num(f.slipLength) << "\n";
+    return os.str();
+}
+
 std::string foamCaseRecord(const FoamCaseSpec& s) {
     Dictionary d;
     d.setValue("dpdCase", fs::absolute(s.dpdCase).lexically_normal().string());
@@ -303,6 +333,13 @@ void writeFoamCase(const FoamCaseSpec& s, const std::string& dir) {
     std::error_code ec;
     if (!s.solidCells.empty()) writeFile(c / "system" / "topoSetDict", foamTopoSetDict(s));
     else fs::remove(c / "system" / "topoSetDict", ec);
+    if (!s.staircaseFaces.empty()) {
+        writeFile(c / "constant" / "staircaseSlip", foamStaircaseSlip(s));
+        writeFile(c / "staircaseSlip.awk", staircaseSlipScript());
+    } else {
+        fs::remove(c / "constant" / "staircaseSlip", ec);
+        fs::remove(c / "staircaseSlip.awk", ec);
+    }
     writeFile(c / "Allrun", allrun(s), true);
     writeFile(c / "Allclean", allclean(), true);
 }

@@ -13,6 +13,8 @@
 //   system/controlDict            simpleFoam; a `sets` function object sampling the lines (raw)
 //   system/fvSchemes, fvSolution  SIMPLEC, converged to `residual` in a few hundred iterations
 //   system/topoSetDict            only with solid cells: the fluid cellSet for subsetMesh
+//   constant/staircaseSlip,       only with a slipping geometry wall: each staircase face's valueFraction
+//   staircaseSlip.awk               by its centre, given to solidWalls by the Allrun after subsetMesh
 //   Allrun, Allclean              blockMesh [topoSet, subsetMesh], simpleFoam, writeCellCentres
 //
 // Navier slip u_w = beta du/dn on a partialSlip wall: the wall value is (1 - f) times the tangential
@@ -32,6 +34,7 @@ std::string foamControlDict(const FoamCaseSpec& s);
 std::string foamFvOptions(const FoamCaseSpec& s);
 std::string foamTopoSetDict(const FoamCaseSpec& s);
 std::string foamCaseRecord(const FoamCaseSpec& s);
+std::string foamStaircaseSlip(const FoamCaseSpec& s);
 // The partialSlip value fraction of a wall with slip length beta and wall-normal cell size h.
 double partialSlipValueFraction(double beta, double h);
 

@@ -12,6 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -47,7 +50,10 @@ protected:
         fs::create_directories(dir);
         in.caseDir = dir.string();
     }
-    void TearDown() override { fs::remove_all(dir); }
+    void TearDown() override {
+        ::unsetenv("DPD_SLIP_CALIBRATIONS");
+        fs::remove_all(dir);
+    }
 
     dpd::FoamCaseSpec spec(const std::string& dictText, const std::string& propsText) {
         const Dictionary d = Dictionary::parse(kHeader + dictText, (dir / "system/makeFoamCaseDict").string());
@@ -169,36 +175,76 @@ TEST_F(FoamCase, SolidCellsAreThoseWhoseCentresLieInTheMask) {
     EXPECT_TRUE(s.isPeriodic(0) && s.isPeriodic(2));
 }
 
-// A geometry wall asking for a slip length (docs/walls.md 3.9): its twin's solidWalls take the same b
-// as partialSlip on the staircase, valueFraction (h/2) / (b + h/2); cells of two sizes are refused. The
-// case holds a calibration, so that the wall itself reads.
-TEST_F(FoamCase, AGeometryWallsSlipLengthGoesToTheStaircase) {
-    geometryTest::writePgm((dir / "constant/geometry/mask.pgm").string(),
-                           {{0, 0, 0, 0}, {255, 255, 255, 255}, {255, 255, 255, 255}, {0, 0, 0, 0}});
+// The dpdProperties of a case whose geometry wall asks for slip b, with the calibration it reads
+// written into the case.
+std::string slippingGeometryCase(const fs::path& dir, const std::string& geometry, double b) {
     geometryTest::writeText((dir / "system/controlDict").string(), "deltaT 0.01;\n");
     geometryTest::writeText((dir / "system/randomEquilWallDict").string(), "fluid { species fluid; density 3; }\n");
-    fs::create_directories(dir / "cache");
+    fs::create_directories(dir / "cache");  // an empty user cache: the case's calibration alone
     ::setenv("DPD_SLIP_CALIBRATIONS", (dir / "cache").c_str(), 1);
     Dictionary calibration((dir / "constant/slipCalibration").string());
     dpd::test::exactSlipCalibration().writeTo(calibration);
     dpd::writeDictionaryFile((dir / "constant/slipCalibration").string(), calibration);
-    const std::string props =
-        kHeader + "dimension 3; kT 1; seed 1;\nspecies { fluid { frozen no; } }\npairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n"
-                  "integrator { type GrootWarren; lambda 0.65; }\nbodyForce { type uniform; value (0.02 0 0); }\n"
-                  "geometry { type imageMask; file \"constant/geometry/mask.pgm\"; solidValues (0); pixelSize 1; extrudeAxis y; }\n"
-                  "walls { channel { type geometry; slipLength 1; tunableSlip { zc 1; epsilon 1; sigma 0.5; "
-                  "fluidBehind { a 25; density 3; } } } }\n";
+    return kHeader + "dimension 3; kT 1; seed 1;\nspecies { fluid { frozen no; } }\npairCoeffs { fluid-fluid { a 25; gamma 4.5; } }\n"
+                     "integrator { type GrootWarren; lambda 0.65; }\nbodyForce { type uniform; value (0 0.02 0); }\n" +
+           geometry + "walls { channel { type geometry; slipLength " + std::to_string(b) +
+           "; tunableSlip { zc 1; epsilon 1; sigma 0.5; fluidBehind { a 25; density 3; } } } }\n";
+}
+
+// A geometry wall asking for a slip length (docs/walls.md 3.9): its twin's solidWalls take the same b
+// as partialSlip, each face valueFraction (h/2) / (b + h/2) with its own h; along a flat wall every
+// face slips by b.
+TEST_F(FoamCase, AGeometryWallsSlipLengthGoesToTheStaircase) {
+    geometryTest::writePgm((dir / "constant/geometry/mask.pgm").string(),
+                           {{0, 0, 0, 0}, {255, 255, 255, 255}, {255, 255, 255, 255}, {0, 0, 0, 0}});
+    const std::string props = slippingGeometryCase(
+        dir, "geometry { type imageMask; file \"constant/geometry/mask.pgm\"; solidValues (0); pixelSize 1; extrudeAxis y; }\n", 1.0);
     const dpd::FoamCaseSpec s = spec("box { min (0 0 0); max (4 1 4); } nu 1; cellSize 0.5;", props);
     EXPECT_EQ(s.solidWallSlip, 1.0);
     EXPECT_FALSE(s.solidCells.empty());
+    // Two layers of 8 x 2 cells (x, y) face the solid: 32 faces normal to z, each slipping by b.
+    ASSERT_EQ(s.staircaseFaces.size(), 32u);
+    for (const dpd::StaircaseFace& f : s.staircaseFaces) {
+        EXPECT_EQ(f.axis, 2);
+        EXPECT_DOUBLE_EQ(f.slipLength, 1.0);
+        EXPECT_TRUE(f.halfCells[2] == 4 || f.halfCells[2] == 12) << f.halfCells[2];  // z = 1 and 3
+    }
     const std::string u = dpd::foamVelocityField(s);
     const std::size_t walls = u.find("solidWalls");
     ASSERT_NE(walls, std::string::npos) << u;
     EXPECT_NE(u.find("type            partialSlip;", walls), std::string::npos) << u;
-    // h = 0.5: (0.25) / (1 + 0.25) = 0.2.
+    // h = 0.5: (0.25) / (1 + 0.25) = 0.2 on every face.
     EXPECT_NE(u.find("valueFraction   uniform 0.2;", walls), std::string::npos) << u;
-    expectRefused("box { min (0 0 0); max (4 1 4); } nu 1; cells (8 1 4);", props, "makeFoamCaseDict", "cells");
-    ::unsetenv("DPD_SLIP_CALIBRATIONS");
+    EXPECT_NE(dpd::foamStaircaseSlip(s).find("\n1 1 4 0.2 1\n"), std::string::npos) << dpd::foamStaircaseSlip(s);
+    // Cells of 0.5 along x and 1 along z: the faces normal to z take h = 1, (0.5) / (1 + 0.5).
+    const dpd::FoamCaseSpec tall = spec("box { min (0 0 0); max (4 1 4); } nu 1; cells (8 1 4);", props);
+    ASSERT_FALSE(tall.staircaseFaces.empty());
+    EXPECT_NE(dpd::foamVelocityField(tall).find("valueFraction   uniform " + std::to_string(1.0 / 3.0).substr(0, 6)),
+              std::string::npos) << dpd::foamVelocityField(tall);
+}
+
+// Along a curved wall each staircase face slips by b |n|_1, n the wall's normal at the face: a pipe of
+// radius 4 drawn in gmsh as a polygon of edges 0.05 long, whose normals are the circle's to 0.05 / 4.
+TEST_F(FoamCase, ACurvedWallsStaircaseFacesSlipByTheirLengthPerUnitOfWall) {
+    geometryTest::writeText((dir / "constant/geometry/pipe.geo").string(),
+                            "R = 4; lc = 0.05;\nPoint(1) = {0, 0, 0, lc};\n"
+                            "Point(2) = {R, 0, 0, lc}; Point(3) = {0, R, 0, lc}; Point(4) = {-R, 0, 0, lc}; Point(5) = {0, -R, 0, lc};\n"
+                            "Circle(1) = {2, 1, 3}; Circle(2) = {3, 1, 4}; Circle(3) = {4, 1, 5}; Circle(4) = {5, 1, 2};\n"
+                            "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1}; Physical Surface(\"fluid\") = {1};\n");
+    const std::string props = slippingGeometryCase(
+        dir, "geometry { type gmsh; file \"constant/geometry/pipe.geo\"; extrudeAxis y; }\n", 2.0);
+    const dpd::FoamCaseSpec s = spec("box { min (-5 -1.5 -5); max (5 1.5 5); } nu 1; dimension 3; cells (40 1 40);", props);
+    ASSERT_GT(s.staircaseFaces.size(), 100u);
+    double largest = 0.0;
+    for (const dpd::StaircaseFace& f : s.staircaseFaces) {
+        const double x = -5.0 + 0.125 * static_cast<double>(f.halfCells[0]);
+        const double z = -5.0 + 0.125 * static_cast<double>(f.halfCells[2]);
+        const double r = std::hypot(x, z);
+        EXPECT_NEAR(r, 4.0, 0.25 * std::sqrt(2.0)) << "a face away from the wall at (" << x << ", " << z << ")";
+        EXPECT_NEAR(f.slipLength, 2.0 * (std::abs(x) + std::abs(z)) / r, 2.0 * 1.5 * 0.05 / 4.0) << x << " " << z;
+        largest = std::max(largest, f.slipLength);
+    }
+    EXPECT_GT(largest, 2.0 * 1.4);  // faces near 45 degrees carry b sqrt(2)
 }
 
 TEST_F(FoamCase, WhatTheContinuumCaseCannotHoldIsRefused) {

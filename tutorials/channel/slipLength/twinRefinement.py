@@ -5,9 +5,9 @@ cells of h = 0.5 to 0.125, its wall no-slip (b = 0) and slipping by b = 1, again
 flow u(r) = g (R^2 - r^2 + 2 b R) / (4 nu), flux Q = pi g R^4 (1 + 4 b / R) / (8 nu).
 
 The twin's wall is the staircase of the faces its solid cells leave, partialSlip with valueFraction
-(h/2) / (b + h/2) on each face. A wall along the faces is the Navier wall exactly (foamTwin.sh, the mask
-channel); a curved one is a staircase whose faces are tilted against it. Information, not a check:
-twinRefinement.dat and twinRefinement.png give the flux's relative error against h for each b.
+(h/2) / (b_f + h/2) on each face, b_f = b |n|_1 with n the circle's normal there: the staircase is
+|n|_1 times as long as the wall, and the flow runs along its faces. Information, not a check (foamTwin.sh
+checks one size): twinRefinement.dat and twinRefinement.png give the flux's relative error against h.
 Run from the tutorial (./Allrun does, after the channels), with calibration/slipCalibration made."""
 import math
 import os
