@@ -67,10 +67,6 @@ void readWalls(const Dictionary& dpdProperties, const DpdModel& model, FoamCaseS
             dpdProperties.fail("walls", "wall '" + w->name + "' moves along its normal: no steady continuum case");
     s.wallAxis = axis;
     // A wall that asks for a slip length (docs/walls.md 3.8) gives its twin the same b, from its point.
-    for (const PlanarWallSettings* w : {lo, hi})
-        if (w->asksSlipLength && w->slipLength > 0.0 && w->velocity.squaredNorm() > 0.0)
-            dpdProperties.fail("walls/" + w->name + "/slipLength",
-                               "the continuum twin has no slip on a moving wall yet (partialSlip holds the wall at rest)");
     const auto slipOf = [](const PlanarWallSettings* w) { return w->asksSlipLength ? w->slipLength : 0.0; };
     s.lower = {lo->name, lo->point[axis], lo->velocity, slipOf(lo)};
     s.upper = {hi->name, hi->point[axis], hi->velocity, slipOf(hi)};
@@ -123,8 +119,6 @@ void readViscosityAndSlip(const Dictionary& dict, const MakeFoamCaseInput& in, F
         if (!(b >= 0.0) || !std::isfinite(b))
             dict.fail("slipLength", "a Navier slip length must be zero or positive (partialSlip walls), got " +
                                         std::to_string(b) + (slipFitted ? " from " + fit.fileName() : ""));
-    if ((beta[0] > 0.0 && s.lower.velocity.squaredNorm() > 0.0) || (beta[1] > 0.0 && s.upper.velocity.squaredNorm() > 0.0))
-        dict.fail("slipLength", "slip on a moving wall is not supported (partialSlip holds the wall at rest)");
     s.lower.slipLength = beta[0];
     s.upper.slipLength = beta[1];
 }

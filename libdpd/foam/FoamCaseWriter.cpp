@@ -67,11 +67,18 @@ std::string boundaryField(const FoamCaseSpec& s, bool velocity) {
         const double h = s.cellSize(s.wallAxis);
         for (const FoamWall* w : {&s.lower, &s.upper}) {
             os << "    " << w->name << "\n    {\n";
+            const double f = partialSlipValueFraction(w->slipLength, h);
             if (!velocity) os << "        type            zeroGradient;\n";
+            else if (w->slipLength > 0.0 && w->velocity.squaredNorm() > 0.0)
+                // The moving wall's Navier slip u_w - U = b du/dn over the half cell: u_w = f U + (1 - f) U_P.
+                os << "        type            mixed;          // Navier slip length " << num(w->slipLength)
+                   << " on a wall moving at U: u = f U + (1 - f) u_P, f = (h/2) / (beta + h/2)\n"
+                   << "        refValue        uniform " << vec(w->velocity) << ";\n        refGradient     uniform (0 0 0);\n"
+                   << "        valueFraction   uniform " << num(f) << ";\n        value           uniform " << vec(w->velocity) << ";\n";
             else if (w->slipLength > 0.0)
                 os << "        type            partialSlip;    // Navier slip length " << num(w->slipLength)
                    << ": f = (h/2) / (beta + h/2)\n        valueFraction   uniform "
-                   << num(partialSlipValueFraction(w->slipLength, h)) << ";\n        value           uniform (0 0 0);\n";
+                   << num(f) << ";\n        value           uniform (0 0 0);\n";
             else if (w->velocity.squaredNorm() > 0.0)
                 os << "        type            fixedValue;\n        value           uniform " << vec(w->velocity) << ";\n";
             else os << "        type            noSlip;\n";

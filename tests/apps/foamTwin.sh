@@ -1,8 +1,9 @@
 #!/bin/bash
 # makeFoamCase, OpenFOAM (blockMesh, topoSet, subsetMesh, simpleFoam, postProcess) and compareFVM end to
-# end on small generated cases: the channel's simpleFoam solution against the analytic parabola (no slip
-# and Navier slip) to solver precision, compareFVM's L2 on a DPD profile with a known error, a solid cut
-# from an image mask, compareFVM's 2-D field, line and Darcy comparison on it, and the errors for bad input.
+# end on small generated cases: the channel's simpleFoam solution against the analytic profile (no slip,
+# Navier slip, a sliding wall with slip, a geometry wall's slip) to solver precision, a curved slipping
+# wall (a pipe) against the Navier-slip flux, compareFVM's L2 on a DPD profile with a known error, a solid
+# cut from an image mask, compareFVM's 2-D field, line and Darcy comparison on it, and bad input.
 #   $1: the directory of the executables, $2: the source directory
 set -u
 bin=$1
@@ -49,17 +50,13 @@ EOD
 # g/(2 nu) [(z - a)(b - z) + beta d] shifted by g h^2 / (8 nu) (the half-cell wall gradient: see
 # tutorials/channel/poiseuille/latticeWall/plotCompareFVM.py), to 1e-8 of the centre velocity.
 checkParabola() {
-    "$py" - "$1" "$2" "${3:-40}" <<'EOD'
-import os, re, sys
+    PYTHONPATH="$src/etc/python" "$py" - "$1" "$2" "${3:-40}" <<'EOD'
+import sys
 import numpy as np
+from dpdfoam.io import foam_latest_fields
 case, beta, cells = sys.argv[1], float(sys.argv[2]), int(sys.argv[3])
-t = max((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and float(d) > 0), key=float)
-def field(name):
-    body = open(f"{case}/{t}/{name}").read().split("internalField")[1]
-    n = int(re.search(r"List<vector>\s*(\d+)", body).group(1))
-    nums = re.findall(r"[-+0-9.eE]+", body[body.index("(", body.index("List<vector>")) + 1:].replace("(", " ").replace(")", " "))
-    return np.array(nums[: 3 * n], float).reshape(n, 3)
-z, u = field("C")[:, 2], field("U")[:, 0]
+_, (centres, velocity) = foam_latest_fields(case, "C", "U")
+z, u = centres[:, 2], velocity[:, 0]
 g, nu, a, b, h = 0.02, 0.5, -5.0, 5.0, 0.25
 exact = g / (2 * nu) * ((z - a) * (b - z) + beta * (b - a)) + g * h * h / (8 * nu)
 err = np.max(np.abs(u - exact)) / np.max(exact)
@@ -103,6 +100,30 @@ makeDpdCase "$s" "slipLength 0.5;"
 "$bin/makeFoamCase" -case "$s" > "$work/log.make" 2>&1 || fail "makeFoamCase (slip): $(cat "$work/log.make")"
 "$s/simpleFoam/Allrun" > "$work/log.allrun" 2>&1 || fail "Allrun (slip): $(cat "$work/log.allrun")"
 checkParabola "$s/simpleFoam" 0.5 || fail "slip channel differs from the Navier-slip parabola"
+
+# 3a. The same slip with the upper wall moving at (1 0 0) (a mixed condition: u = f U + (1 - f) u_P): the
+#     cells hold u = A + B z - g z^2 / (2 nu) with u(-5) = b u'(-5) and u(5) - 1 = -b u'(5), the parabola
+#     shifted by g h^2 / (8 nu) as above (the Couette part, linear, is exact on the mesh), to 1e-8.
+m=$work/movingSlip
+makeDpdCase "$m" "slipLength 0.5;"
+sed -i 's/normal (0 0 -1); reflection bounceBack;/normal (0 0 -1); reflection bounceBack; velocity (1 0 0);/' "$m/constant/dpdProperties"
+"$bin/makeFoamCase" -case "$m" > "$work/log.make" 2>&1 || fail "makeFoamCase (moving wall with slip): $(cat "$work/log.make")"
+"$m/simpleFoam/Allrun" > "$work/log.allrun" 2>&1 || fail "Allrun (moving wall with slip): $(cat "$work/log.allrun")"
+PYTHONPATH="$src/etc/python" "$py" - "$m/simpleFoam" <<'EOD' || fail "the moving wall with slip differs from the Navier-slip Couette-Poiseuille profile"
+import sys
+import numpy as np
+from dpdfoam.io import foam_latest_fields
+case = sys.argv[1]
+_, (centres, velocity) = foam_latest_fields(case, "C", "U")
+z, u = centres[:, 2], velocity[:, 0]
+g, nu, a, c, b, U, h = 0.02, 0.5, -5.0, 5.0, 0.5, 1.0, 0.25
+k = g / (2 * nu)
+A, B = np.linalg.solve([[1, a - b], [1, c + b]], [k * a * a - 2 * b * k * a, U + k * c * c + 2 * b * k * c])
+exact = A + B * z - k * z * z + g * h * h / (8 * nu)
+err = np.max(np.abs(u - exact)) / np.max(np.abs(exact))
+print(f"{case}: max |U - exact - g h^2/8nu| / u_max = {err:.2e}")
+sys.exit(0 if err < 1e-8 and len(z) == 40 else 1)
+EOD
 
 # 3b. The same slip on a geometry wall (docs/walls.md 3.9): an image mask solid where |z| > 5, its wall
 #     asking for slip 0.5 (resolved against a calibration written into the case, a line in 1/gamma_L);
@@ -170,19 +191,15 @@ for b in 0 1; do
         -e "s/slipLength 0.5/slipLength $b/" "$g/constant/dpdProperties" > "$p/constant/dpdProperties"
     "$bin/makeFoamCase" -case "$p" > "$work/log.make" 2>&1 || fail "makeFoamCase (pipe, b = $b): $(cat "$work/log.make")"
     "$p/simpleFoam/Allrun" > "$work/log.allrun" 2>&1 || fail "Allrun (pipe, b = $b): $(cat "$work/log.allrun")"
-    "$py" - "$p/simpleFoam" "$b" <<'EOD' || fail "the pipe's twin with b = $b misses the Navier-slip flux"
-import math, os, re, sys
-import numpy as np
+    PYTHONPATH="$src/etc/python" "$py" - "$p/simpleFoam" "$b" <<'EOD' || fail "the pipe's twin with b = $b misses the Navier-slip flux"
+import math, sys
+from dpdfoam.io import foam_last_residual, foam_latest_fields
 case, b = sys.argv[1], float(sys.argv[2])
-t = max((d for d in os.listdir(case) if re.fullmatch(r"[0-9.]+", d) and float(d) > 0), key=float)
-body = open(f"{case}/{t}/U").read().split("internalField")[1]
-n = int(re.search(r"List<vector>\s*(\d+)", body).group(1))
-nums = re.findall(r"[-+0-9.eE]+", body[body.index("(", body.index("List<vector>")) + 1:].replace("(", " ").replace(")", " "))
-uy = np.array(nums[: 3 * n], float).reshape(n, 3)[:, 1]
+_, (velocity,) = foam_latest_fields(case, "U")
 R = 4.0
-flux, exact = uy.sum() * 0.25 * 0.25, math.pi * 0.02 * R ** 4 * (1 + 4 * b / R) / (8 * 0.5)
+flux, exact = velocity[:, 1].sum() * 0.25 * 0.25, math.pi * 0.02 * R ** 4 * (1 + 4 * b / R) / (8 * 0.5)
 error = flux / exact - 1
-residual = float(re.findall(r"Solving for Uy.*?Initial residual = ([-+0-9.eE]+)", open(f"{case}/log.simpleFoam").read())[-1])
+residual = foam_last_residual(case, "Uy")
 print(f"pipe b = {b:g}: flux {flux:.6g} against {exact:.6g} ({error:+.4f}), Uy's residual {residual:.1e}")
 sys.exit(0 if abs(error) < 0.25 / 8 and residual < 1e-10 else 1)
 EOD

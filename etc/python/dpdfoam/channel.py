@@ -1,5 +1,7 @@
 """Channel flows between two walls: the no-slip Poiseuille profile, kT against the local shear rate,
 and the slip of the two walls."""
+import math
+
 import numpy as np
 
 from .io import body_force, latest_fit, latest_profile
@@ -33,6 +35,14 @@ def kT_against_shear(periodic, g, nu):
     return g * centres / nu, means
 
 
+def viscous_heating(eta, shear, rho, gamma, cutoff):
+    """The rise of kT from DPD's own viscous heating at a uniform shear rate: shear heats the fluid at
+    eta shear^2 per volume, the pair thermostat takes heat out at gamma rho^2 C (kT - kT0) per volume,
+    C = int w_D d^3r = 4 pi rc^3 / 30 (the standard weight); in balance kT - kT0 = eta shear^2 /
+    (rho^2 gamma C)."""
+    return eta * shear * shear / (rho * rho * gamma * 4.0 * math.pi * cutoff ** 3 / 30.0)
+
+
 def no_wall_reference(case="viscosity", profile="viscosityProfile"):
     """The fluid without walls (a tutorial's periodic reverse-Poiseuille box): nu and its error
     (fitSlipLength), its profile table, and kT against the shear rate there (kT_against_shear)."""
@@ -47,3 +57,17 @@ def walls_mean_slip(sweep, name="slipLength"):
     name: the columns' stem (<name>_0, <name>Error_0, ...; slipTensor's slipParallel, slipPerpendicular)."""
     b = 0.5 * (np.asarray(sweep[name + "_0"]) + np.asarray(sweep[name + "_1"]))
     return b, 0.5 * np.hypot(sweep[name + "Error_0"], sweep[name + "Error_1"])
+
+
+def near_wall_layer(table, bulk):
+    """A channel's fluid next to its walls, from a profileBins table: kT over the first cutoff of fluid at
+    each wall (count-weighted) and its error, the density's peak, and the bulk's density (the mean over
+    the bins `bulk` selects)."""
+    z, rho = table["z"], table["density"]
+    bulk_density = float(np.mean(rho[bulk]))
+    fluid = rho > 0.05 * bulk_density
+    layer = fluid & ((z < z[fluid].min() + 1.0) | (z > z[fluid].max() - 1.0))
+    w = table["count"][layer]
+    kT = float(np.sum(w * table["kT"][layer]) / np.sum(w))
+    kT_err = float(np.sqrt(np.sum((w * table["kTErr"][layer]) ** 2)) / np.sum(w))
+    return kT, kT_err, float(rho.max()), bulk_density

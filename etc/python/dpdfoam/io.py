@@ -1,6 +1,7 @@
 """Reading what the tools write: time directories, profile tables, dictionaries (fit.dat, compare.dat,
 case dictionaries; setting an entry with dpdDictionary), runSweep's tables, the logs, OpenFOAM fields."""
 import glob
+import math
 import os
 import re
 import subprocess
@@ -156,6 +157,11 @@ def read_compare(path):
     return parse_dict(head), {name: parse_dict(body) for name, body in re.findall(r"(\w+)\s*\{([^{}]*)\}", rest)}
 
 
+def latest_compare(case="."):
+    """The top-level entries of a case's latest compareFVM compare.dat (read_compare)."""
+    return read_compare(latest(os.path.join(case, "postProcessing", "compareFVM", "*", "compare.dat")))[0]
+
+
 def read_sweep(path):
     """runSweep's table: {column: values}; numbers as arrays ("none", a quantity a run does not measure,
     as NaN), other columns (the run's name, a vector value written as (1,0,0)) as lists of words."""
@@ -205,6 +211,19 @@ def log_count(path, label):
 
 
 # ---- OpenFOAM ------------------------------------------------------------------------------------------
+
+
+def run_logged(case, command):
+    """Runs a tool's command line with its output in case/log.<tool>; exits naming the log on failure."""
+    with open(os.path.join(case, f"log.{os.path.basename(command[0])}"), "w") as log:
+        if subprocess.run(command, stdout=log, stderr=subprocess.STDOUT).returncode != 0:
+            sys.exit(f"{' '.join(command)} failed (see {log.name})")
+
+
+def foam_last_residual(case, field):
+    """The initial residual of the last solution of `field` (Ux, Uy, p, ...) in case/log.simpleFoam."""
+    found = re.findall(rf"Solving for {field}, Initial residual = ([-+0-9.eE]+)", read_text(f"{case}/log.simpleFoam"))
+    return float(found[-1]) if found else math.nan
 
 
 def foam_latest_time(case):

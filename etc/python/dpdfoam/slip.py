@@ -8,7 +8,7 @@ import subprocess
 import numpy as np
 
 from .channel import walls_mean_slip
-from .io import read_sweep
+from .io import latest, read_dict, read_sweep, read_text
 
 
 def friction_for_slip(target, gammas, b, err):
@@ -21,6 +21,25 @@ def friction_for_slip(target, gammas, b, err):
             w = (target - b[lo]) / (b[hi] - b[lo])
             return 1.0 / ((1 - w) / gammas[lo] + w / gammas[hi]), (1 - w) * err[lo] + w * err[hi]
     return None
+
+
+def slip_choices(case="."):
+    """What dpdFoamLike's log says each wall asking `slipLength b;` was given (docs/walls.md 3.8): per
+    wall (gammaL, the calibration's b error there, how far behind where it was put the wall acts, its
+    error)."""
+    pattern = (r"Slip length\s*: wall \w+: slipLength \S+ from \S+: gammaL (\S+) \(b \+- (\S+) there\), "
+               r"acting (\S+) \+- (\S+) behind")
+    return [tuple(float(v) for v in m) for m in re.findall(pattern, read_text(f"{case}/log.dpdFoamLike"))]
+
+
+def asked_slip_measured(case="."):
+    """A channel whose walls ask for a slip length: the walls' mean b from its latest fit, the run's
+    error, the calibration's error at that b (shared by the walls, it adds to their mean whole, and it
+    carries where the calibration places the wall: docs/analysis.md 5.3), and slip_choices."""
+    fit = read_dict(latest(f"{case}/postProcessing/fitSlipLength/*/fit.dat"))
+    b, e = fit.get("slipLength", [math.nan] * 2), fit.get("slipLengthError", [math.nan] * 2)
+    walls = slip_choices(case)
+    return 0.5 * (b[0] + b[1]), 0.5 * math.hypot(*e), walls[0][1] if walls else math.nan, walls
 
 
 def read_slip_tensor(path, offset=0.0):

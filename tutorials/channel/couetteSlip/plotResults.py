@@ -1,23 +1,20 @@
 #!/usr/bin/env python3
 """Couette slip tutorial: pictures, results table and the checks of what the scene must show.
 
-Reads sweep/sweep.dat (one row per a_ww, written by runSweep) and each run's profile
-(sweep/<run>/postProcessing/profileBins/<time>/channelProfile.dat), draws velocity, density,
-temperature and shear stress across the channel for every a_ww (couetteSlip.png), the density near
-the walls for every a_wf (couetteSlip_nearWall.png), writes results.dat with the published table
-(published.dat) beside the measured one, and exits non-zero when a check fails.
-
-With -noSlipWall: the calibrated variant (gamma_fw 36) from sweepNoSlipWall/, written to
-resultsNoSlipWall.dat and couetteSlipNoSlipWall.png; its check is the no-slip wall at a_ww = 5.
-With -calibratedWall: the variant whose wall is 0.9 as dense as published, from sweepCalibratedWall/,
-written to resultsCalibratedWall.dat and couetteSlipCalibratedWall.png; at full size it is held to
-the published table like the published set.
+Reads sweep/sweep.dat (runSweep's, one row per a_ww) and each run's latest channelProfile.dat; draws
+velocity, density, temperature and shear stress across the channel per a_ww (couetteSlip.png) and the
+density near the walls per a_wf (couetteSlip_nearWall.png); writes results.dat with the published
+table (published.dat) beside the measured one; non-zero exit when a check fails. -noSlipWall: the
+calibrated variant (gamma_fw 36, sweepNoSlipWall/, resultsNoSlipWall.dat), checked for no slip at
+a_ww = 5; -calibratedWall: the wall 0.9 as dense as published (sweepCalibratedWall/,
+resultsCalibratedWall.dat), held to the published table at full size like the published set.
 """
 import math
 import sys
 
 import numpy as np
 
+from dpdfoam.channel import viscous_heating
 from dpdfoam.checks import Checks, write_results
 from dpdfoam.io import dictionary_numbers, latest_fit, latest_profile, wall_planes
 from dpdfoam.plots import label, mark_walls, plt, save
@@ -33,11 +30,10 @@ NO_SLIP_WALL = VARIANT == "-noSlipWall"
 SWEEP = f"sweep{SUFFIX}"
 CASE = f"{SWEEP}/couetteSlip" if VARIANT else "."
 A_WW = "pairCoeffs/wall-wall/a"
-# The channel's nu = stress / (rho shear rate) is held to the viscosity of the same fluid without walls,
-# measured by this tutorial's own run (viscosity/: periodic reverse Poiseuille at the channel's shear
-# rate). The check decides only when the combined standard error of the two is within its budget:
-# full size, nu without walls +-1.4 % and the channel's +-0.3 % (measured), budget 2 %; test mode,
-# the channel's 10 x 3 x 10 run adds +-1.5-2 %, budget 3 %. Then |difference| within 5 %, fixed.
+# The channel's nu = stress / (rho shear rate) against the same fluid's without walls (viscosity/:
+# periodic reverse Poiseuille at the channel's shear rate), decided when the two's combined standard
+# error is within budget (full size: +-1.4 % and +-0.3 % measured, budget 2 %; test: the 10 x 3 x 10
+# channel adds +-1.5-2 %, budget 3 %); then |difference| within 5 %, fixed.
 NU_BUDGET = 0.03 if TEST_MODE else 0.02
 NU_BOUND = 0.05
 # The published comparison (issue 25, dpdfoam.sweep): each point within max(0.3 r_c, 30 %) of the
@@ -50,16 +46,6 @@ NO_SLIP_BOUND, NO_SLIP_BUDGET = 0.1, 0.03
 PROFILE_PANELS = (("ux", True, "velocity u_x"), ("density", False, "density"),
                   ("kT", False, "kT about the local flow (dashed: set + viscous heating)"),
                   ("sigmaxz", True, "shear stress sigma_xz"))
-
-
-def viscous_heating(eta, shear, rho, gamma, cutoff):
-    """Rise of kT from DPD's own viscous heating in Couette flow (uniform shear).
-
-    Shear heats the fluid at eta shear^2 per volume; the pair thermostat takes heat out at
-    gamma rho^2 C (kT - kT0) per volume, C = int w_D d^3r = 4 pi rc^3 / 30 (the standard weight; see
-    tutorials/channel/poiseuille/plotResults.py). In balance kT - kT0 = eta shear^2 / (rho^2 gamma C).
-    """
-    return eta * shear * shear / (rho * rho * gamma * 4.0 * math.pi * cutoff ** 3 / 30.0)
 
 
 def accounted_by_wall_density(table, cutoff):

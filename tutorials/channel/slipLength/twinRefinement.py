@@ -1,24 +1,18 @@
 #!/usr/bin/env python3
-"""The continuum twin of a curved wall that asks for a slip length (docs/walls.md 3.9), under mesh
-refinement: pipe/ (a pipe of radius R = 4 along y, drawn in gmsh) through makeFoamCase and simpleFoam on
-cells of h = 0.5 to 0.125, its wall no-slip (b = 0) and slipping by b = 1, against the Navier-slip pipe
-flow u(r) = g (R^2 - r^2 + 2 b R) / (4 nu), flux Q = pi g R^4 (1 + 4 b / R) / (8 nu).
-
-The twin's wall is the staircase of the faces its solid cells leave, partialSlip with valueFraction
-(h/2) / (b_f + h/2) on each face, b_f = b |n|_1 with n the circle's normal there: the staircase is
-|n|_1 times as long as the wall, and the flow runs along its faces. Information, not a check (foamTwin.sh
-checks one size): twinRefinement.dat and twinRefinement.png give the flux's relative error against h.
+"""The continuum twin of a curved wall asking for slip under mesh refinement (docs/walls.md 3.9): pipe/
+(radius R = 4 along y, drawn in gmsh) through makeFoamCase and simpleFoam on cells of 0.5 to 0.125, its
+wall no-slip and slipping by b = 1 (each staircase face by b |n|_1), against the Navier-slip pipe flux
+pi g R^4 (1 + 4 b / R) / (8 nu). Information (foamTwin.sh checks one size): twinRefinement.dat, .png.
 Run from the tutorial (./Allrun does, after the channels), with calibration/slipCalibration made."""
 import math
 import os
 import shutil
-import subprocess
 import sys
 
 import numpy as np
 
 from dpdfoam.checks import write_results
-from dpdfoam.io import foam_latest_fields, set_dictionary_value
+from dpdfoam.io import foam_last_residual, foam_latest_fields, run_logged, set_dictionary_value
 from dpdfoam.plots import label, plt, save
 
 R, G, NU, BOX = 4.0, 0.02, 0.3, 10.0
@@ -35,16 +29,12 @@ def run_twin(case, b, h):
     set_dictionary_value(os.path.join(case, "constant/dpdProperties"), "walls/pipe/slipLength", f"{b:g}")
     n = int(round(BOX / h))
     set_dictionary_value(os.path.join(case, "system/makeFoamCaseDict"), "cells", f"({n} 1 {n})")
-    # U settles to round-off (1e-12) within 76, 242, 881 and 3327 iterations at h 0.5 to 0.0625 (b = 0;
-    # b = 1 about twice as many); p's normalised residual stays at the cut mesh's round-off, so the
-    # iterations are capped, and U's residual is checked below.
+    # U settles to 1e-12 within 76, 242, 881, 3327 iterations at h 0.5 to 0.0625 (b = 0; b = 1 about
+    # twice as many); p's residual stays at round-off: the iterations are capped, U's residual checked.
     set_dictionary_value(os.path.join(case, "system/makeFoamCaseDict"), "maxIterations", str(int(1000 * (0.25 / h) ** 1.7)))
-    for command in (["makeFoamCase", "-case", case], [os.path.join(case, "simpleFoam", "Allrun")]):
-        with open(os.path.join(case, f"log.{os.path.basename(command[0])}"), "w") as log:
-            if subprocess.run(command, stdout=log, stderr=subprocess.STDOUT).returncode != 0:
-                sys.exit(f"twinRefinement: {' '.join(command)} failed (see {log.name})")
-    last = [line for line in open(os.path.join(case, "simpleFoam", "log.simpleFoam")) if "Solving for Uy" in line][-1]
-    residual = float(last.split("Initial residual = ")[1].split(",")[0])
+    run_logged(case, ["makeFoamCase", "-case", case])
+    run_logged(case, [os.path.join(case, "simpleFoam", "Allrun")])
+    residual = foam_last_residual(os.path.join(case, "simpleFoam"), "Uy")
     if not residual < 1e-10:
         sys.exit(f"twinRefinement: {case}'s twin did not converge (Uy's residual {residual:g})")
     _, (centres, velocity) = foam_latest_fields(os.path.join(case, "simpleFoam"), "C", "U")
@@ -69,7 +59,6 @@ def main():
     ax.loglog(np.array(SIZES), 0.1 * np.array(SIZES), "k:", lw=0.8, label="h / 10")
     label(ax, "the pipe's twin: |flux / Navier-slip flux - 1| against the cell size", "h (cell size)", "relative error", 8)
     save(fig, "twinRefinement.png")
-    return 0
 
 
 if __name__ == "__main__":

@@ -1,19 +1,14 @@
 #!/usr/bin/env python3
 """Tunable-slip tutorial: slip length against gamma_L, measured and predicted; results table; checks.
 
-For every gammaL-<value>/ case (a25/gammaL-<value>/ with -a25): the fit (postProcessing/fitSlipLength/<time>/fit.dat: measured slip
-length per wall, nu, the predicted slip length), the profile (density next to the walls) and the log
-(crossings of the wall planes). Writes results.dat and slipLength.png (-a25: resultsA25.dat,
-slipLengthA25.png), exits non-zero when a check fails.
-
-The prediction b / z_c = 2/alpha - 7/15 - 19 alpha/1800 (alpha = z_c^2 gamma_L rho / eta) assumes the
-fluid fills the friction layer at the bulk density. The WCA wall empties the first ~sigma of it, so the
-table also gives the near-wall density and the prediction with the friction the measured density
-profile actually feels (alpha_eff, see effective_alpha). The fluid without conservative force (a = 0,
-the published scene) is an ideal gas: its density in the WCA potential V is rho_bulk exp(-V / kT), which
-the layer's measured density is held to (boltzmann_layer). zc, the WCA's epsilon and sigma and kT come
-from each case's constant/dpdProperties.
-"""
+For every gammaL-<value>/ case (a25/gammaL-<value>/ with -a25): its latest fit.dat (each wall's slip
+length, nu, the predicted slip length), profile (density next to the walls) and log (crossings).
+Writes results.dat and slipLength.png (-a25: resultsA25.dat, slipLengthA25.png); non-zero exit when a
+check fails. The prediction b / z_c = 2/alpha - 7/15 - 19 alpha/1800 (alpha = z_c^2 gamma_L rho / eta)
+assumes the friction layer filled at the bulk density; the WCA wall empties its first ~sigma, so the
+table also gives the prediction with the measured profile's friction (effective_alpha). The a = 0 fluid
+(published) is an ideal gas: its density in the WCA potential V is rho_bulk exp(-V / kT), which the
+layer's measured density is held to (boltzmann_layer). zc, epsilon, sigma, kT: each case's dpdProperties."""
 import glob
 import os
 import sys
