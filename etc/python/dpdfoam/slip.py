@@ -8,7 +8,7 @@ import subprocess
 import numpy as np
 
 from .channel import walls_mean_slip
-from .io import latest, read_dict, read_sweep, read_text
+from .io import latest_fit, read_sweep, read_text
 
 
 def friction_for_slip(target, gammas, b, err):
@@ -36,7 +36,7 @@ def asked_slip_measured(case="."):
     """A channel whose walls ask for a slip length: the walls' mean b from its latest fit, the run's
     error, the calibration's error at that b (shared by the walls, it adds to their mean whole, and it
     carries where the calibration places the wall: docs/analysis.md 5.3), and slip_choices."""
-    fit = read_dict(latest(f"{case}/postProcessing/fitSlipLength/*/fit.dat"))
+    fit = latest_fit(case)
     b, e = fit.get("slipLength", [math.nan] * 2), fit.get("slipLengthError", [math.nan] * 2)
     walls = slip_choices(case)
     return 0.5 * (b[0] + b[1]), 0.5 * math.hypot(*e), walls[0][1] if walls else math.nan, walls
