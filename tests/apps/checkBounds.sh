@@ -4,7 +4,7 @@
 # from the layer's density, the ideal gas's Boltzmann layer, no crossing), tutorials/channel/stripedWall
 # (the slip tensor against the continuum reference, the flux's turn, zero flux, linearity in the force,
 # the fluid at rest; its calibration's fall of b with gamma_L), tutorials/channel/slipGammaFw (the
-# slip's rise with falling gamma_fw), tutorials/channel/slipLength (the measured slip length against
+# slip's rise with falling gamma_fw, the variants' gap at the wall), tutorials/channel/slipLength (the measured slip length against
 # the asked one), tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu
 # against the fluid without walls, and the missing verdict of too few super-blocks) and
 # tutorials/benchmarks/speedAccuracy (each scheme's errors at its smallest step, the blow-up). Each
@@ -160,6 +160,34 @@ expect("slipGammaFw 2-D: a step down just beyond 3 budgets", False,
        mono("2-D", [0.4850, 0.4399, 0.4399 + 3 * step + 0.001, 0.2828], two_e))
 expect("slipGammaFw 2-D: the rise just short of 3 budgets", False,
        mono("2-D", [0.2828 + 3 * rise - 0.001, 0.30, 0.29, 0.2828], two_e))
+
+# slipGammaFw's gap at the wall. gap_checks(checks, [(gap, error)] a variant, (gap, error) standard): the
+# full-size depletions of the README (0.354, 0.358 against 0.031; errors ~0.003), then broken.
+gaps = lambda variants, standard=(0.031, 0.003): (lambda c: sg.gap_checks(c, variants, standard))
+GAPS = [(0.354, 0.003), (0.358, 0.003)]
+expect("slipGammaFw gaps full size", True, gaps(GAPS))
+for name, value in (("NaN", NAN), ("empty", ""), ("missing", None)):
+    expect(f"slipGammaFw gap {name}", False, gaps([(value, 0.003), GAPS[1]]))
+    expect(f"slipGammaFw gap error {name}", False, gaps([GAPS[0], (0.358, value)]))
+    expect(f"slipGammaFw standard wall's gap {name}", False, gaps(GAPS, (value, 0.003)))
+expect("slipGammaFw gap: a variant missing", False, gaps(GAPS[:1]))
+expect("slipGammaFw gap: an error over its budget", False, gaps([(0.354, sg.GAP_BUDGET), GAPS[1]]))
+expect("slipGammaFw gap: just short of the margin", False, gaps([(0.031 + sg.GAP_MARGIN - 0.001, 0.003), GAPS[1]]))
+expect("slipGammaFw gap: just beyond the margin", True, gaps([(0.031 + sg.GAP_MARGIN + 0.001, 0.003), GAPS[1]]))
+
+# dpdfoam.sweep.wall_depletion, the gap those checks read, on a profile built for it: walls at 0 and 10,
+# density 3 but half that within 0.5 of each wall, so 0.25 of fluid missing at each; every bin +- 0.03.
+import numpy as np  # noqa: E402
+from dpdfoam.sweep import wall_depletion  # noqa: E402
+z = np.arange(0.025, 10, 0.05)
+made = {"z": z, "density": np.where(np.minimum(z, 10 - z) < 0.5, 1.5, 3.0), "densityErr": np.full(z.size, 0.03)}
+gap, gap_err = wall_depletion(made, (0.0, 10.0))
+# Error: the 10 depleted bins a wall, each 0.5 * 0.05 / 3 * 0.03, in quadrature over 20; the centre's
+# 0.03 / 10 (100 bins), times 0.5 * 0.05 * (20 * 1.5) / 3^2.
+by_bins, by_centre = 0.5 * 0.05 / 3 * 0.03 * np.sqrt(20), 0.5 * 0.05 * 30 / 9 * 0.003
+expect("wall_depletion of the profile made for it", True,
+       lambda c: c.add("gap 0.25 and its error", abs(gap - 0.25) < 1e-12 and abs(gap_err - np.hypot(by_bins, by_centre)) < 1e-12,
+                       f"{gap} +- {gap_err}", gap, gap_err))
 
 # stripedWall/calibrate.py. rise_checks(checks, gammas, b, err, test): the full-size calibration of the
 # README (2026-11-27), then broken: a NaN or missing b or error, an error over its budget, b at the

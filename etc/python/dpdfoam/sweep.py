@@ -148,6 +148,19 @@ def central_density(prof, walls):
     return np.mean(prof["density"][np.abs(z - 0.5 * (walls[0] + walls[1])) < 0.25 * (walls[1] - walls[0])])
 
 
+def wall_depletion(prof, walls, cutoff=1.0):
+    """The gap at the walls: the fluid missing within one cutoff of a wall, as a width (the integral of
+    max(0, 1 - rho / rho_centre) dz over the bins there, mean of the two walls), and its standard error
+    from the bins' density errors (those bins' and the centre's in quadrature)."""
+    z, rho, err = prof["z"], prof["density"], prof["densityErr"]
+    dz, centre = z[1] - z[0], np.abs(z - 0.5 * (walls[0] + walls[1])) < 0.25 * (walls[1] - walls[0])
+    rho_c, rho_c_err = central_density(prof, walls), np.sqrt(np.sum(err[centre] ** 2)) / centre.sum()
+    near = (wall_distance(z, walls) < cutoff) & (rho < rho_c)
+    gap = 0.5 * dz * np.sum(1.0 - rho[near] / rho_c)
+    by_centre = 0.5 * dz * np.sum(rho[near]) / rho_c ** 2
+    return gap, float(np.hypot(0.5 * dz / rho_c * np.sqrt(np.sum(err[near] ** 2)), by_centre * rho_c_err))
+
+
 def slab_means(z, values, errors, low, high, width):
     """Means (and standard errors) of a profile over slabs of the given width from low to high."""
     means, errs = [], []
