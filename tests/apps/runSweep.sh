@@ -115,4 +115,46 @@ expectError $? log.bad7 "the command failed in bad/base_endTime6"
 [ -d base/second/base_endTime600 ] || fail "sweep 7 made no copy: $(cat log.second)"
 [ -e base/second/base_endTime600/copies ] && fail "the first sweep's copies were copied into the second's"
 
+# 8. -jobs 2: two runs at once (each waits until the other has started), each told half the cores
+# unless OMP_NUM_THREADS is set, its output in its copy's log.runSweep; the table as one at a time.
+togetherRun() {
+    local mine=$(basename "$PWD")
+    echo "$OMP_NUM_THREADS" > threads
+    touch "$work/started.$mine"
+    for _ in $(seq 100); do
+        [ "$(ls "$work"/started.* | wc -l)" -ge 2 ] && break
+        sleep 0.1
+    done
+    [ "$(ls "$work"/started.* | wc -l)" -ge 2 ] || { echo "$mine ran alone"; return 1; }
+    echo "output of $mine"
+    fakeRun
+}
+runSweep -case base -dir together -jobs 2 -entry constant/dpdProperties pairCoeffs/wall-wall/a -values 5 15 \
+         -collect slipLength nu mode -- togetherRun > log.together 2>&1 || fail "sweep 8 failed: $(cat log.together)"
+expected="$(cat one.dat)"
+[ "$(cat together/sweep.dat 2>/dev/null)" = "$expected" ] || fail "sweep 8 table: $(cat together/sweep.dat 2>/dev/null)"
+half=$(( $(nproc) / 2 > 0 ? $(nproc) / 2 : 1 ))
+[ "$(cat together/base_a5/threads 2>/dev/null)" = "$half" ] || fail "a run of two at once got $(cat together/base_a5/threads) threads, not $half"
+grep -q "output of base_a15" together/base_a15/log.runSweep 2>/dev/null || fail "no log.runSweep with the run's output"
+rm -f "$work"/started.*
+OMP_NUM_THREADS=3 runSweep -case base -dir togetherSet -jobs 2 -entry system/controlDict endTime -values 7 8 \
+         -collect nu -- togetherRun > log.togetherSet 2>&1 || fail "sweep 8b failed: $(cat log.togetherSet)"
+[ "$(cat togetherSet/base_endTime7/threads 2>/dev/null)" = 3 ] || fail "OMP_NUM_THREADS set by the user was not kept"
+
+# 9. -jobs 2 with a run that fails: non-zero, the copy named and its output shown, no table, and no
+# run started after it (the last value's copy is not made).
+# (10 already run: collected while the others run.)
+failSecond() { [ "$(basename "$PWD")" = base_endTime20 ] && { echo "broken on purpose"; return 3; }; sleep 1; fakeRun; }
+runSweep -case base -dir badJobs -jobs 1 -entry system/controlDict endTime -values 10 -collect nu -- fakeRun > /dev/null 2>&1
+rm -f badJobs/sweep.dat
+runSweep -case base -dir badJobs -jobs 2 -entry system/controlDict endTime -values 20 10 30 40 -collect nu \
+         -- failSecond > log.badJobs 2>&1
+expectError $? log.badJobs "the command failed in badJobs/base_endTime20 (status 3)" "broken on purpose"
+[ -f badJobs/sweep.dat ] && fail "a table was written by a failed sweep of -jobs 2"
+[ -d badJobs/base_endTime40 ] && fail "a run was started after one failed"
+for jobs in 0 two; do
+    runSweep -case base -dir bad -jobs $jobs -entry system/controlDict endTime -values 5 -collect nu -- fakeRun > log.badJobs$jobs 2>&1
+    expectError $? log.badJobs$jobs "-jobs needs a positive whole number, not '$jobs'"
+done
+
 finishTests runSweep
