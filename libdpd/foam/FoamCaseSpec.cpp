@@ -6,6 +6,7 @@
 #include "io/Dictionary.hpp"
 #include "io/TimeDirectories.hpp"
 #include "case/DpdProperties.hpp"
+#include "walls/GeometryShape.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -36,13 +37,11 @@ Box readMeshBox(const Dictionary& dict, const MakeFoamCaseInput& in, int dpdDime
 }
 
 // The slip length the geometry wall asks for (docs/walls.md 3.9), for the solidWalls patch.
-double geometryWallSlip(const Dictionary& dpdProperties) {
-    if (!dpdProperties.found("walls") || !dpdProperties.isDict("walls")) return 0.0;
-    const Dictionary& walls = dpdProperties.subDict("walls");
-    for (const std::string& name : walls.keys())
-        if (walls.isDict(name) && walls.subDict(name).getOrDefault<std::string>("type", "plane") == "geometry" &&
-            walls.subDict(name).found("slipLength"))
-            return walls.subDict(name).getNonNegative<double>("slipLength");
+double geometryWallSlip(const DpdModel& model) {
+    for (std::size_t w = 0; w < model.walls.size(); ++w) {
+        const Wall& wall = model.walls[w];
+        if (dynamic_cast<const GeometryShape*>(&wall.shape()) && wall.askedSlipLength()) return *wall.askedSlipLength();
+    }
     return 0.0;
 }
 
@@ -304,7 +303,7 @@ FoamCaseSpec makeFoamCaseSpec(const Dictionary& dict, const Dictionary& dpdPrope
     if (s.maxIterations < 1) dict.fail("maxIterations", "must be positive");
     s.residual = dict.found("residual") ? dict.getPositive<double>("residual") : 1e-12;
     if (hasGeometry) {
-        s.solidWallSlip = geometryWallSlip(dpdProperties);
+        s.solidWallSlip = geometryWallSlip(model);
         markSolidCells(dpdProperties, in.caseDir, s.dpdBox, model.cutoff, s);
     }
     return s;

@@ -51,6 +51,7 @@ std::unique_ptr<Wall> readGeometryWall(const Dictionary& d, const WallReadContex
     auto wall = std::make_unique<Wall>(c.name, std::make_shared<GeometryShape>(c.geometry, offset),
                                        readWallRule(d, "specular", c.cutoff));
     wall->withForce(std::make_shared<TunableSlipLayer>(model, std::nullopt, c.index));
+    if (d.found("slipLength")) wall->askingSlipLength(d.getNonNegative<double>("slipLength"));
     return wall;
 }
 

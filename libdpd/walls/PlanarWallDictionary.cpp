@@ -84,6 +84,7 @@ std::unique_ptr<Wall> makePlanarWall(const PlanarWallSettings& settings, std::si
     auto wall = std::make_unique<Wall>(settings.name, std::make_shared<PlaneShape>(settings.actingPoint(), settings.normal),
                                        settings.rule);
     wall->sliding(settings.velocity);
+    if (settings.asksSlipLength) wall->askingSlipLength(settings.slipLength);
     if (settings.hasTunableSlip) {
         std::optional<TunableSlipStripes> stripes;
         if (settings.hasStripes) stripes = settings.stripes;

@@ -46,6 +46,11 @@ Wall& Wall::withForce(std::shared_ptr<const SurfaceForce> force) {
     return *this;
 }
 
+Wall& Wall::askingSlipLength(double b) {
+    askedSlipLength_ = b;
+    return *this;
+}
+
 std::string Wall::description() const {
     std::ostringstream os;
     os << "reflection " << rule_->description();

@@ -10,6 +10,7 @@
 #include "walls/WallStep.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace dpd {
@@ -21,6 +22,9 @@ public:
     // A wall that slides at `velocity` (in its own surface) and carries the frozen particles inside it.
     Wall& sliding(const Eigen::Vector3d& velocity);
     Wall& withForce(std::shared_ptr<const SurfaceForce> force);
+    // The slip length b the wall asked for (`slipLength b;`, docs/walls.md 3.8), measured from where
+    // the user put it; its friction and acting surface were chosen for it. Its continuum twin takes b.
+    Wall& askingSlipLength(double b);
 
     const std::string& name() const { return name_; }
     const WallShape& shape() const { return *shape_; }
@@ -36,6 +40,7 @@ public:
     void markFlowAxes(const Box& box, std::array<bool, 3>& varies) const;
 
     bool carriesFrozenParticles() const { return carries_; }
+    const std::optional<double>& askedSlipLength() const { return askedSlipLength_; }
     const Eigen::Vector3d& velocity() const { return velocity_; }
 
     // Whether the wall acts on the fluid with forces; those forces may depend on the velocities.
@@ -77,6 +82,7 @@ private:
     std::uint32_t stream_;
     Eigen::Vector3d velocity_{0, 0, 0};
     bool carries_ = false;
+    std::optional<double> askedSlipLength_;
 };
 
 }  // namespace dpd
