@@ -1,26 +1,34 @@
-"""Tunable-slip and striped walls: a friction sweep read backwards (the gamma_L for a slip length),
+"""Tunable-slip and striped walls: a slip calibration read backwards (the gamma_L for a slip length),
 slipTensor's runs with the two walls' mean slips, stripedSlip's continuum reference of a striped wall,
 and a stripeGrid's fluid layers over the stripes' sectors (docs/walls.md 3.5-3.7)."""
 import math
 import re
 import subprocess
+import sys
 
 import numpy as np
 
 from .channel import walls_mean_slip
-from .io import latest_fit, read_sweep, read_text
+from .io import latest_fit, parse_dict, read_sweep, read_text
 
 
-def friction_for_slip(target, gammas, b, err):
-    """gamma_L with slip length `target`, linear in 1/gamma_L between the bracketing sweep points (the
-    tunable-slip wall's b is nearly linear in 1/gamma_L: b/zc ~ 2/alpha - 7/15, docs/walls.md 3.5), and
-    the slip length's error there (interpolated). None when no neighbouring pair brackets it."""
-    order = np.argsort(gammas)
-    for lo, hi in zip(order[:-1], order[1:]):
-        if (b[lo] - target) * (b[hi] - target) <= 0.0:
-            w = (target - b[lo]) / (b[hi] - b[lo])
-            return 1.0 / ((1 - w) / gammas[lo] + w / gammas[hi]), (1 - w) * err[lo] + w * err[hi]
-    return None
+def calibrated_walls(path, slips):
+    """The walls a slip calibration gives the asked slip lengths, as dpdFoamLike's walls asking them
+    take them (the slipCalibration tool, docs/walls.md 3.8): the calibration's range (smallestSlip,
+    largestSlip, wallOffset) and per asked b a dict gammaL, slipLengthError (the calibration's error of
+    b there), planeOffset and slipLeft (b itself within the range; below it the stiffest friction's
+    slip); None for a b outside 0 .. largestSlip."""
+    def tool(*asked):
+        run = subprocess.run(["slipCalibration", "-file", path, *asked], capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit(f"slipCalibration -file {path} {' '.join(asked)}: {run.stderr.strip()}")
+        return parse_dict(run.stdout)
+    summary = tool()
+    inside = [b for b in slips if 0.0 <= b <= summary["largestSlip"]]
+    asked = tool("-slipLength", *(f"{b:.17g}" for b in inside)) if inside else {}
+    keys = ("gammaL", "slipLengthError", "planeOffset", "slipLeft")
+    walls = {b: {k: asked[k][i] for k in keys} for i, b in enumerate(inside)}
+    return summary, [walls.get(b) for b in slips]
 
 
 def slip_choices(case="."):

@@ -4,10 +4,11 @@
 Reads hydrodynamicWall's fit of the uniform-wall sweep (calibration/hydrodynamicWall.dat: the wall's
 position, shared by every gamma_L, and each gamma_L's slip length b from it, with errors) and the
 sweep's gamma_L (calibration/sweepPoiseuille/sweep.dat). Picks the gas sectors' gamma_L (b = the
-target, -slip; and the other targets of -slips b1,b2,...) by interpolating b linearly in 1/gamma_L
-between the two sweep points that bracket it (dpdfoam.slip.friction_for_slip), with the interpolated
-error; and the no-slip gamma_L the same way at b = 0 or, where the friction saturates before b reaches
-0, the stiffest gamma_L with the slip it leaves. Writes calibration/gammaL.dat (a dictionary the Allrun
+target, -slip; and the other targets of -slips b1,b2,...) as a wall asking that slip length takes it
+from the sweep's calibration (calibration/slipCalibration, through the slipCalibration tool: b linear in
+1/gamma_L between the two sweep points that bracket it, with the interpolated error); and the no-slip
+gamma_L the same way at b = 0 or, where the friction saturates before b reaches 0, the stiffest gamma_L
+with the slip it leaves. Writes calibration/gammaL.dat (a dictionary the Allrun
 and plotResults.py read) and calibration.png; exits non-zero when either is not found or b rises with
 gamma_L.
 """
@@ -20,7 +21,7 @@ import numpy as np
 from dpdfoam.checks import Checks, print_file
 from dpdfoam.io import read_dict, read_sweep
 from dpdfoam.plots import label, plt, save
-from dpdfoam.slip import friction_for_slip
+from dpdfoam.slip import calibrated_walls
 
 
 # The slip length's standard error grows with b (b = u_slip / shear rate): full size 0.10-0.15 where b is
@@ -88,18 +89,22 @@ def main():
     rise_checks(checks, gammas, b, err, test)
     order = np.argsort(gammas)
     picks = {}
-    found = friction_for_slip(slip_target, gammas, b, err)
+    # Each asked slip length's friction and error as dpdFoamLike's walls would take them; bracketed
+    # where it lies within the calibrated range (below it the stiffest friction leaves its own slip).
+    summary, walls = calibrated_walls("calibration/slipCalibration", [slip_target, 0.0] + args.slips)
+    bracketed = lambda b, wall: (wall["gammaL"], wall["slipLengthError"]) if wall and b >= summary["smallestSlip"] else None
+    found = bracketed(slip_target, walls[0])
     checks.add(f"the sweep brackets b = {slip_target:g} (gammaGas)", found is not None, span)
     if found:
         picks["gammaGas"] = (found[0], slip_target, found[1])
     # The other local slip lengths the study sweeps (-slips): their gas gamma_L as lists.
-    others = [(b_other, friction_for_slip(b_other, gammas, b, err)) for b_other in args.slips]
+    others = [(b_other, bracketed(b_other, wall)) for b_other, wall in zip(args.slips, walls[2:])]
     for b_other, found_other in others:
         checks.add(f"the sweep brackets b = {b_other:g} (gammaGasOf)", found_other is not None, span)
     # No slip: where b crosses 0, or, where the friction saturates first (the stiffest step of the sweep
     # no longer lowers b decisively), the stiffest gamma_L with the slip it leaves, b0 (plotResults.py
     # holds the stripes to the reference with that residual slip).
-    found = friction_for_slip(0.0, gammas, b, err)
+    found = bracketed(0.0, walls[1])
     stiff, before = order[-1], order[-2]
     if found:
         picks["gammaNoSlip"] = (found[0], 0.0, found[1])
