@@ -213,6 +213,34 @@ def log_count(path, label):
 # ---- OpenFOAM ------------------------------------------------------------------------------------------
 
 
+def wall_events(log, start):
+    """The particles the walls turned round and those found behind a wall (dpdFoamLike's reports "walls
+    since last report: ... returned N crossed M"), summed over the walls and over the reports after time
+    `start`, and the time those reports cover (NaN when none)."""
+    returned = crossed = 0
+    first = last = None
+    for t, walls in re.findall(r"^Time = (\S+).*?\n.*?\n\s+walls since last report:([^\n]*)", read_text(log), re.M):
+        t = float(t)
+        if last is not None and last >= start:
+            returned += sum(int(n) for n in re.findall(r"returned (\d+)", walls))
+            crossed += sum(int(n) for n in re.findall(r"crossed (\d+)", walls))
+            first = last if first is None else first
+        last = t
+    return returned, crossed, (last - first) if first is not None else float("nan")
+
+
+def frozen_wall_counts(log):
+    """A wall builder's frozen particles from its log: (built, at the full depth). blockFrozenWall
+    reports each wall's built particles and, where it built one cutoff only, the lattice's; randomEquilWall
+    the frozen particles and those dropped beyond one cutoff."""
+    text = read_text(log)
+    walls = re.findall(r"^Wall \S+ : (\d+) frozen particles(?: \((\d+) in the lattice)?", text, re.M)
+    if walls:
+        return sum(int(n) for n, _ in walls), sum(int(m or n) for n, m in walls)
+    built = log_count(log, "Frozen particles")
+    return built, built + log_count(log, "Dropped")
+
+
 def run_logged(case, command):
     """Runs a tool's command line with its output in case/log.<tool>; exits naming the log on failure."""
     with open(os.path.join(case, f"log.{os.path.basename(command[0])}"), "w") as log:

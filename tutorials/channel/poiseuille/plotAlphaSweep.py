@@ -10,10 +10,11 @@ import sys
 
 import numpy as np
 
+from dpdfoam.channel import no_wall_reference
 from dpdfoam.checks import write_results
 from dpdfoam.io import body_force
 from dpdfoam.plots import label, plt, save
-from plotResults import QUANTITIES, SeedRun, reference  # this tutorial's runs, beside this script
+from plotResults import QUANTITIES, SeedRun  # this tutorial's runs, beside this script
 
 CASES = (("FCC", "fcc", "blockFrozenWallDict"), ("random, mask", "randomMask", "randomEquilWallDict"))
 SHOWN = (("slip", "slip length b"), ("nu", "nu"), ("rhoNear", "density within one cutoff / bulk"),
@@ -22,7 +23,8 @@ SHOWN = (("slip", "slip length b"), ("nu", "nu"), ("rhoNear", "density within on
 
 
 def main():
-    nu_ref, _, kT_of_shear = reference()
+    ref = no_wall_reference()
+    nu_ref, kT_of_shear = ref["nu"], ref["kT_of_shear"]
     g = body_force("fcc")
     lines = [f"# The bounce layer's thickness alpha (one seed each): nu without walls {nu_ref:.5f}",
              "# wall         alpha " + " ".join(f"{k:>14s}" for k in QUANTITIES)]

@@ -16,36 +16,22 @@ and kT, 1 % for nu).
 """
 import glob
 import math
-import re
 import sys
 
 import numpy as np
 
 from dpdfoam.channel import no_wall_reference
 from dpdfoam.checks import Checks, write_results
-from dpdfoam.io import body_force, dictionary_value, latest, latest_fit, latest_profile, log_count, read_dict, read_text, vector
+from dpdfoam.io import (body_force, dictionary_value, frozen_wall_counts, latest_compare, latest_fit, latest_profile,
+                        log_count, vector, wall_events)
 from dpdfoam.plots import draw_kT_of_shear, draw_no_slip_poiseuille, label, plt, save
 from dpdfoam.published import read_published
 from dpdfoam.snapshots import same_particles
 from dpdfoam.stats import mean_and_error
+from dpdfoam.sweep import near_both_walls
 
 WALLS = (("FCC", "fcc", "blockFrozenWallDict"), ("random", "randomMask", "randomEquilWallDict"))
 QUANTITIES = ("nu", "slip", "rhoNear", "rhoFirst", "kTNear", "kTBulkVsNoWall", "returned", "crossed")
-
-
-def wall_events(log, start):
-    """Particles the walls turned round and particles found behind a wall, summed over the walls and
-    over the reports after `start`, and the time they cover."""
-    returned = crossed = 0
-    first = last = None
-    for t, walls in re.findall(r"^Time = (\S+).*?\n.*?\n\s+walls since last report:([^\n]*)", read_text(log), re.M):
-        t = float(t)
-        if last is not None and last >= start:
-            returned += sum(int(n) for n in re.findall(r"returned (\d+)", walls))
-            crossed += sum(int(n) for n in re.findall(r"crossed (\d+)", walls))
-            first = last if first is None else first
-        last = t
-    return returned, crossed, (last - first) if first is not None else float("nan")
 
 
 class SeedRun:
@@ -83,21 +69,9 @@ def counts_table(wall, case, builder, published):
     """Built fluid and wall particles (seed 1) beside the paper's and the wall at the paper's depth."""
     log = f"runs/{case}_seed1/log.{builder[:-4]}"
     fluid, fluid_paper, wall_paper = log_count(log, "Fluid particles"), published[(case, "fluid")], published[(case, "wall")]
-    if builder == "blockFrozenWallDict":
-        walls = [(int(n), int(m) if m else int(n)) for n, m in
-                 re.findall(r"^Wall \S+ : (\d+) frozen particles(?: \((\d+) in the lattice)?", read_text(log), re.M)]
-        built, full = sum(n for n, _ in walls), sum(m for _, m in walls)
-    else:
-        built = log_count(log, "Frozen particles")
-        full = built + log_count(log, "Dropped")
+    built, full = frozen_wall_counts(log)
     return (f"{wall:14s} fluid {fluid} (published {fluid_paper}, {100 * (fluid / fluid_paper - 1):+.2f} %)"
             f"  wall at the published depth {full} (published {wall_paper}), built within one cutoff {built}")
-
-
-def reference():
-    """nu without walls, its error, and kT against the shear rate there (viscosity/)."""
-    ref = no_wall_reference()
-    return ref["nu"], ref["nuError"], ref["kT_of_shear"]
 
 
 def seed_runs(case, builder, kT_of_shear, g, nu_ref):
@@ -130,7 +104,8 @@ def main():
     test = "-test" in sys.argv
     g = body_force("fcc")
     kT_set = float(dictionary_value("fcc/constant/dpdProperties", "kT"))
-    nu_ref, nu_ref_err, kT_of_shear = reference()
+    ref = no_wall_reference()
+    nu_ref, nu_ref_err, kT_of_shear = ref["nu"], ref["nuError"], ref["kT_of_shear"]
     published = read_published("published.dat")["counts"]
     lines = [f"# Scene 1 (Liu and Chang 2010) as published: g {g:g}; nu without walls {nu_ref:.5f} +- {nu_ref_err:.5f}",
              "# Built against published (seed 1)" + (": the test's narrow channel, not the published size" if test else ":")]
@@ -153,7 +128,7 @@ def main():
     for wall, (runs, s) in results.items():
         wall_checks(checks, wall, runs, s, nu_ref, nu_ref_err, kT_set, 0.02 if test else 0.01)
 
-    fvm = [read_dict(latest(f"{p}/postProcessing/compareFVM/*/compare.dat")) for p in sorted(glob.glob("runs/fcc_seed*"))]
+    fvm = [latest_compare(p) for p in sorted(glob.glob("runs/fcc_seed*"))]
     worst = np.max([c["L2"] for c in fvm])
     checks.add("FCC: DPD within 3 % (relative L2) of simpleFoam (nu without walls, no slip), every seed",
                worst < 0.03, f"largest L2 {worst:.4f} (noise L2 {max(c['noiseL2'] for c in fvm):.4f})")
@@ -170,9 +145,7 @@ def plot(results, g, nu_ref, kT_set, kT_of_shear):
         mean = {k: np.mean([r.table[k] for r in runs], axis=0) for k in ("ux", "density", "kT")}
         ax[0, 0].plot(t["z"], mean["ux"], marker, ms=2.5, mfc="none",
                       label=f"{name}: nu {s['nu'][0]:.4f}, b {s['slip'][0]:+.3f} +- {s['slip'][1]:.3f}")
-        dist = np.concatenate([t["z"] - lo, hi - t["z"]])
-        near = dist < 2.0
-        ax[0, 1].plot(dist[near], np.concatenate([mean["density"]] * 2)[near], marker, ms=3, mfc="none", label=name)
+        ax[0, 1].plot(*near_both_walls(t["z"], mean["density"], (lo, hi), 2.0), marker, ms=3, mfc="none", label=name)
         ax[1, 0].plot(t["z"], mean["kT"], marker, ms=2.5, mfc="none", label=name)
         ax[1, 1].errorbar([r.q["slip"] for r in runs], [r.q["nu"] for r in runs], fmt=marker, mfc="none", label=name)
     d = hi - lo

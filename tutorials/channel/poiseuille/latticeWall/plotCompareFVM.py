@@ -20,7 +20,7 @@ import numpy as np
 
 from dpdfoam.channel import poiseuille_velocity
 from dpdfoam.checks import Checks, write_results
-from dpdfoam.io import foam_latest_fields, foam_latest_time, latest_fit, read_dict
+from dpdfoam.io import foam_latest_fields, foam_latest_time, latest_fit, read_compare, read_dict
 from dpdfoam.plots import label, plt, save
 
 # The profile's own noise (compareFVM's noiseL2) first below a budget, so that the 3 % bound decides:
@@ -30,7 +30,7 @@ NOISE_BUDGET = 0.01
 
 def main():
     t = foam_latest_time("postProcessing/compareFVM")
-    cmp = read_dict(f"postProcessing/compareFVM/{t}/compare.dat")
+    cmp = read_compare(f"postProcessing/compareFVM/{t}/compare.dat")[0]  # the whole profile's, not a line's
     zb, ud, ue, uf = np.loadtxt(f"postProcessing/compareFVM/{t}/profiles.dat")[:, :4].T
     fit = latest_fit()
     rec = read_dict("simpleFoam/constant/dpdCase")
