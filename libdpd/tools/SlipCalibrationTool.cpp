@@ -31,8 +31,8 @@ void printSlipCalibration(const SlipCalibrationQuery& q, std::ostream& out) {
         } catch (const std::out_of_range& e) {
             throw std::invalid_argument("-slipLength: " + std::string(e.what()));
         }
-        // Below the calibrated range the stiffest friction leaves its own slip from where the wall acts.
-        leftSlips.push_back(b < calibration.smallestSlip() ? calibration.smallestSlip() : b);
+        // What the plane moved out by leaves on top of b (below the range, the stiffest friction's slip).
+        leftSlips.push_back(b + (calibration.wallOffset() - walls.back().planeOffset));
     }
     out << std::setprecision(10) << std::left;
     out << std::setw(16) << "calibration" << '"' << q.file << "\";\n"
