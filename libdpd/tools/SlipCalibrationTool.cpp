@@ -12,10 +12,9 @@ namespace dpd {
 
 namespace {
 
-void printList(std::ostream& out, const char* name, const std::vector<CalibratedFriction>& walls,
-               double CalibratedFriction::*member) {
+void printList(std::ostream& out, const char* name, const std::vector<double>& values) {
     out << std::setw(16) << std::left << name << "(";
-    for (std::size_t k = 0; k < walls.size(); ++k) out << (k ? " " : "") << walls[k].*member;
+    for (std::size_t k = 0; k < values.size(); ++k) out << (k ? " " : "") << values[k];
     out << ");\n";
 }
 
@@ -23,16 +22,19 @@ void printList(std::ostream& out, const char* name, const std::vector<Calibrated
 
 void printSlipCalibration(const SlipCalibrationQuery& q, std::ostream& out) {
     const SlipCalibration calibration = SlipCalibration::read(Dictionary::readFile(q.file));
-    std::vector<CalibratedFriction> walls;
-    std::vector<double> leftSlips;
+    std::vector<double> gammas, errors, planes, left;
     for (double b : q.slipLengths) {
+        CalibratedFriction wall;
         try {
-            walls.push_back(calibration.wallFor(b));
+            wall = calibration.wallFor(b);
         } catch (const std::out_of_range& e) {
             throw std::invalid_argument("-slipLength: " + std::string(e.what()));
         }
+        gammas.push_back(wall.gammaL);
+        errors.push_back(wall.slipLengthError);
+        planes.push_back(wall.planeOffset);
         // What the plane moved out by leaves on top of b (below the range, the stiffest friction's slip).
-        leftSlips.push_back(b + (calibration.wallOffset() - walls.back().planeOffset));
+        left.push_back(b + (calibration.wallOffset() - wall.planeOffset));
     }
     out << std::setprecision(10) << std::left;
     out << std::setw(16) << "calibration" << '"' << q.file << "\";\n"
@@ -40,16 +42,12 @@ void printSlipCalibration(const SlipCalibrationQuery& q, std::ostream& out) {
         << std::setw(16) << "wallOffsetError" << calibration.wallOffsetError() << ";\n"
         << std::setw(16) << "smallestSlip" << calibration.smallestSlip() << ";\n"
         << std::setw(16) << "largestSlip" << calibration.largestSlip() << ";\n";
-    if (walls.empty()) return;
-    out << std::setw(16) << "slipLength" << "(";
-    for (std::size_t k = 0; k < q.slipLengths.size(); ++k) out << (k ? " " : "") << q.slipLengths[k];
-    out << ");\n";
-    printList(out, "gammaL", walls, &CalibratedFriction::gammaL);
-    printList(out, "slipLengthError", walls, &CalibratedFriction::slipLengthError);
-    printList(out, "planeOffset", walls, &CalibratedFriction::planeOffset);
-    out << std::setw(16) << "slipLeft" << "(";
-    for (std::size_t k = 0; k < leftSlips.size(); ++k) out << (k ? " " : "") << leftSlips[k];
-    out << ");\n";
+    if (q.slipLengths.empty()) return;
+    printList(out, "slipLength", q.slipLengths);
+    printList(out, "gammaL", gammas);
+    printList(out, "slipLengthError", errors);
+    printList(out, "planeOffset", planes);
+    printList(out, "slipLeft", left);
 }
 
 }  // namespace dpd

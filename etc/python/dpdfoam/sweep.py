@@ -154,7 +154,7 @@ def wall_depletion(prof, walls, cutoff=1.0):
     from the bins' density errors (those bins' and the centre's in quadrature)."""
     z, rho, err = prof["z"], prof["density"], prof["densityErr"]
     dz, centre = z[1] - z[0], np.abs(z - 0.5 * (walls[0] + walls[1])) < 0.25 * (walls[1] - walls[0])
-    rho_c, rho_c_err = central_density(prof, walls), np.sqrt(np.sum(err[centre] ** 2)) / centre.sum()
+    rho_c, rho_c_err = np.mean(rho[centre]), np.sqrt(np.sum(err[centre] ** 2)) / centre.sum()
     near = (wall_distance(z, walls) < cutoff) & (rho < rho_c)
     gap = 0.5 * dz * np.sum(1.0 - rho[near] / rho_c)
     by_centre = 0.5 * dz * np.sum(rho[near]) / rho_c ** 2
