@@ -11,7 +11,7 @@ Modules:
     stats       means and standard errors, Student-t quantiles, Welch-Satterthwaite, jackknife
     blocks      a profile's sampled blocks joined into super-blocks (errors of slow flows)
     channel     channel flows: the no-slip Poiseuille profile, kT against the shear rate, the slip of
-                the two walls
+                the two walls, the particles the walls turn round or let through per unit time and area
     checks      the checks' bookkeeping: pass / fail / information, a NaN or missing value fails
     published   a tutorial's published.dat and the comparison with the paper's tables
     plots       the figures' common parts (Agg backend)

@@ -1,10 +1,10 @@
 """Channel flows between two walls: the no-slip Poiseuille profile, kT against the local shear rate,
-and the slip of the two walls."""
+the slip of the two walls, and the particles the walls turn round or let through."""
 import math
 
 import numpy as np
 
-from .io import body_force, latest_fit, latest_profile
+from .io import body_force, dictionary_value, latest_fit, latest_profile, vector, wall_events
 
 
 def poiseuille_velocity(z, low, high, g, nu):
@@ -71,3 +71,11 @@ def near_wall_layer(table, bulk):
     kT = float(np.sum(w * table["kT"][layer]) / np.sum(w))
     kT_err = float(np.sqrt(np.sum((w * table["kTErr"][layer]) ** 2)) / np.sum(w))
     return kT, kT_err, float(rho.max()), bulk_density
+
+
+def wall_event_rates(case, builder, start):
+    """(returned, crossed) of io.wall_events after time start, per unit time and area of the builder box's two x-y faces."""
+    box = [vector(dictionary_value(f"{case}/system/{builder}", f"box/{k}")) for k in ("min", "max")]
+    area = 2.0 * (box[1][0] - box[0][0]) * (box[1][1] - box[0][1])
+    returned, crossed, span = wall_events(f"{case}/log.dpdFoamLike", start)
+    return returned / (span * area), crossed / (span * area)

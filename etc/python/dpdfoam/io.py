@@ -39,6 +39,24 @@ def latest_sampling(case, name):
     return max(paths, key=lambda p: _time_of(os.path.dirname(os.path.dirname(p))))
 
 
+def numbered_cases(prefix, command, script="plotResults", placeholder="<n>"):
+    """The case directories <prefix><number> as (number, path) sorted by number; exits naming `command` when none."""
+    directories = [path for path in glob.glob(glob.escape(prefix) + "*") if os.path.isdir(path)]
+    numbered = ((_number_after(prefix, path), path) for path in directories)
+    cases = sorted(case for case in numbered if case[0] is not None)
+    if not cases:
+        sys.exit(f"{script}: no {prefix}{placeholder} (run {command})")
+    return cases
+
+
+def _number_after(prefix, path):
+    """The number that follows prefix in path (None when the rest is not a number)."""
+    try:
+        return float(path[len(prefix):])
+    except ValueError:
+        return None
+
+
 def latest_fit(case=".", tool="fitSlipLength"):
     """The latest fit.dat of a case's fitting tool (postProcessing/<tool>/<time>/fit.dat) as a dict."""
     return read_dict(latest(os.path.join(case, "postProcessing", tool, "*", "fit.dat")))
@@ -96,6 +114,11 @@ def dictionary_numbers(path, entries, **defaults):
     """Several numbers of a case dictionary: {name: dictionary_number(path, entry, its default)} for
     entries {name: entry}, the defaults given by name (kT=1.0)."""
     return {name: dictionary_number(path, entry, defaults.get(name)) for name, entry in entries.items()}
+
+
+def function_start(case, function):
+    """The startTime of the function object `function` in a case's system/controlDict, as a number."""
+    return float(dictionary_value(os.path.join(case, "system/controlDict"), f"functions/{function}/startTime"))
 
 
 def vector(text):

@@ -21,6 +21,12 @@ def label(ax, title=None, xlabel=None, ylabel=None, legend=None):
         ax.legend(fontsize=legend)
 
 
+def label_panels(axes, panels, legend=None):
+    """Each of axes labelled (label) with its (title, xlabel, ylabel) of panels, and a legend of that font size."""
+    for ax, (title, xlabel, ylabel) in zip(axes, panels):
+        label(ax, title, xlabel, ylabel, legend)
+
+
 def mark_walls(axes, walls, **style):
     """A dotted grey line at each wall position on each of axes."""
     for ax in np.atleast_1d(axes):

@@ -184,6 +184,31 @@ def kT_over_no_wall(prof, bulk, centre, g, nu, kT_of_shear):
     return np.average(prof["kT"][bulk] - kT_box[bulk], weights=prof["count"][bulk])
 
 
+def wall_layer_density(prof, walls, cutoff=1.0):
+    """The mean density within cutoff of either wall over the central density (central_density)."""
+    return np.mean(prof["density"][wall_distance(prof["z"], walls) < cutoff]) / central_density(prof, walls)
+
+
+def first_bins_density(prof, walls):
+    """The density of the bin nearest each wall, the two walls' mean, over the central density."""
+    z, centre = prof["z"], 0.5 * (walls[0] + walls[1])
+    dist = wall_distance(z, walls)
+    first = [prof["density"][np.argmin(np.where(side, dist, np.inf))] for side in (z < centre, z > centre)]
+    return np.mean(first) / central_density(prof, walls)
+
+
+def wall_layer_kT(prof, walls, cutoff=1.0):
+    """kT within cutoff of either wall, count-weighted (a bin without particles reads kT 0)."""
+    near = wall_distance(prof["z"], walls) < cutoff
+    return np.average(prof["kT"][near], weights=prof["count"][near])
+
+
+def density_flatness(prof, walls, cutoff=1.0):
+    """The largest relative deviation of the density from its mean over the bins beyond cutoff of the walls."""
+    rho = prof["density"][wall_distance(prof["z"], walls) > cutoff]
+    return np.max(np.abs(rho / np.mean(rho) - 1.0))
+
+
 # ---- Channels compared with long-block errors --------------------------------------------------------
 
 

@@ -5,14 +5,11 @@ found behind the wall per unit time and area, the density next to the wall, the 
 kT within one cutoff of the wall. Writes resultsAlphaSweep.dat and alphaSweep.png; information, no
 checks (the published scene's checks are plotResults.py's).
 """
-import glob
 import sys
-
-import numpy as np
 
 from dpdfoam.channel import no_wall_reference
 from dpdfoam.checks import write_results
-from dpdfoam.io import body_force
+from dpdfoam.io import body_force, numbered_cases
 from dpdfoam.plots import label, plt, save
 from plotResults import QUANTITIES, SeedRun  # this tutorial's runs, beside this script
 
@@ -30,15 +27,11 @@ def main():
              "# wall         alpha " + " ".join(f"{k:>14s}" for k in QUANTITIES)]
     sweeps = {}
     for wall, case, builder in CASES:
-        paths = glob.glob(f"alphaSweep/{case}_alpha*")
-        if not paths:
-            sys.exit(f"plotAlphaSweep: no alphaSweep/{case}_alpha<a> (run ./Allrun -alphaSweep)")
-        alphas = np.array([float(p.rsplit("alpha", 1)[1]) for p in paths])
-        order = np.argsort(alphas)
-        runs = [SeedRun(paths[k], builder, kT_of_shear, g, nu_ref) for k in order]
-        sweeps[wall] = (alphas[order], runs)
+        cases = numbered_cases(f"alphaSweep/{case}_alpha", "./Allrun -alphaSweep", "plotAlphaSweep", "<a>")
+        alphas, runs = [a for a, _ in cases], [SeedRun(p, builder, kT_of_shear, g, nu_ref) for _, p in cases]
+        sweeps[wall] = (alphas, runs)
         lines += [f"{wall.replace(' ', '_'):12s} {a:6g} " + " ".join(f"{r.q[k]:14.5f}" for k in QUANTITIES)
-                  for a, r in zip(alphas[order], runs)]
+                  for a, r in zip(alphas, runs)]
     write_results("resultsAlphaSweep.dat", lines)
 
     fig, ax = plt.subplots(2, 3, figsize=(14, 8))

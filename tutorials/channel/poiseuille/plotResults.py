@@ -14,21 +14,20 @@ one run, and the standard error of their mean is spread / sqrt(n). Each check ho
 bound after requiring its standard error within a budget (a third of the bound for the slip length
 and kT, 1 % for nu).
 """
-import glob
-import math
 import sys
 
 import numpy as np
 
-from dpdfoam.channel import no_wall_reference
-from dpdfoam.checks import Checks, write_results
-from dpdfoam.io import (body_force, dictionary_value, frozen_wall_counts, latest_compare, latest_fit, latest_profile,
-                        log_count, vector, wall_events)
-from dpdfoam.plots import draw_kT_of_shear, draw_no_slip_poiseuille, label, plt, save
+from dpdfoam.channel import no_wall_reference, wall_event_rates
+from dpdfoam.checks import Checks, relative_difference, write_results
+from dpdfoam.io import (body_force, dictionary_value, frozen_wall_counts, function_start, latest_compare, latest_fit,
+                        latest_profile, log_count, numbered_cases)
+from dpdfoam.plots import draw_kT_of_shear, draw_no_slip_poiseuille, label_panels, plt, save
 from dpdfoam.published import read_published
 from dpdfoam.snapshots import same_particles
 from dpdfoam.stats import mean_and_error
-from dpdfoam.sweep import near_both_walls
+from dpdfoam.sweep import (density_flatness, first_bins_density, kT_over_no_wall, near_both_walls, wall_distance,
+                           wall_layer_density, wall_layer_kT)
 
 WALLS = (("FCC", "fcc", "blockFrozenWallDict"), ("random", "randomMask", "randomEquilWallDict"))
 QUANTITIES = ("nu", "slip", "rhoNear", "rhoFirst", "kTNear", "kTBulkVsNoWall", "returned", "crossed")
@@ -41,28 +40,17 @@ class SeedRun:
         self.path = path
         fit, self.table = latest_fit(path), latest_profile(path)
         lo, hi = self.walls = tuple(fit["wallPosition"])
-        z, rho, kT, count = (self.table[k] for k in ("z", "density", "kT", "count"))
-        dist = np.minimum(z - lo, hi - z)
-        centre = 0.5 * (lo + hi)
-        bulk_rho = np.mean(rho[np.abs(z - centre) < 0.25 * (hi - lo)])
-        near, bulk = dist < 1.0, dist > 3.0
-        shear = g * np.abs(z - centre) / nu_ref
-        box = [vector(dictionary_value(f"{path}/system/{builder}", f"box/{k}")) for k in ("min", "max")]
-        area = 2.0 * (box[1][0] - box[0][0]) * (box[1][1] - box[0][1])
-        start = float(dictionary_value(f"{path}/system/controlDict", "functions/channelProfile/startTime"))
-        returned, crossed, span = wall_events(f"{path}/log.dpdFoamLike", start)
+        bulk = wall_distance(self.table["z"], self.walls) > 3.0
         self.q = {
             "nu": fit["nu"],
             "slip": 0.5 * sum(fit["slipLength"]),  # the two walls' mean: their slip is one property
-            "rhoNear": np.mean(rho[near]) / bulk_rho,
-            "rhoFirst": np.mean([rho[np.argmin(np.where(side, dist, np.inf))] for side in (z < centre, z > centre)]) / bulk_rho,
-            "kTNear": np.average(kT[near], weights=count[near]),  # empty bins read kT 0
-            "kTBulkVsNoWall": np.average(kT[bulk] - np.interp(shear[bulk], *kT_of_shear), weights=count[bulk]),
-            "returned": returned / (span * area),
-            "crossed": crossed / (span * area),
+            "rhoNear": wall_layer_density(self.table, self.walls),
+            "rhoFirst": first_bins_density(self.table, self.walls),
+            "kTNear": wall_layer_kT(self.table, self.walls),  # empty bins read kT 0
+            "kTBulkVsNoWall": kT_over_no_wall(self.table, bulk, 0.5 * (lo + hi), g, nu_ref, kT_of_shear),
         }
-        interior = dist > 1.0
-        self.flatness = np.max(np.abs(rho[interior] / np.mean(rho[interior]) - 1.0))
+        self.q["returned"], self.q["crossed"] = wall_event_rates(path, builder, function_start(path, "channelProfile"))
+        self.flatness = density_flatness(self.table, self.walls)
 
 
 def counts_table(wall, case, builder, published):
@@ -75,16 +63,12 @@ def counts_table(wall, case, builder, published):
 
 
 def seed_runs(case, builder, kT_of_shear, g, nu_ref):
-    paths = sorted(glob.glob(f"runs/{case}_seed*"), key=lambda p: int(p.rsplit("seed", 1)[1]))
-    if not paths:
-        sys.exit(f"plotResults: no runs/{case}_seed<n> (run ./Allrun)")
-    runs = [SeedRun(p, builder, kT_of_shear, g, nu_ref) for p in paths]
+    runs = [SeedRun(p, builder, kT_of_shear, g, nu_ref) for _, p in numbered_cases(f"runs/{case}_seed", "./Allrun")]
     return runs, {k: mean_and_error([r.q[k] for r in runs]) for k in QUANTITIES}
 
 
 def wall_checks(checks, wall, runs, s, nu_ref, nu_ref_err, kT_set, kT_tolerance):
-    nu, nu_se = s["nu"]
-    rel, sigma = nu / nu_ref - 1.0, math.hypot(nu_se, nu_ref_err) / nu_ref
+    rel, sigma = relative_difference(*s["nu"], nu_ref, nu_ref_err)
     checks.add(f"{wall}: nu within 3 % of nu without walls, its standard error within 1 %",
                abs(rel) < 0.03 and sigma <= 0.01, f"{100 * rel:+.2f} % (1 sigma {100 * sigma:.2f} %)")
     dkT, dkT_se = s["kTBulkVsNoWall"]
@@ -125,10 +109,9 @@ def main():
         lines.append(f"{wall.replace(' ', '_'):16s} {len(runs):5d} " +
                      " ".join(f"{s[k][0]:11.5f} +- {s[k][1]:.5f}" for k in QUANTITIES))
         lines += [f"#   {r.path:22s} " + " ".join(f"{r.q[k]:20.5f}" for k in QUANTITIES) for r in runs]
-    for wall, (runs, s) in results.items():
         wall_checks(checks, wall, runs, s, nu_ref, nu_ref_err, kT_set, 0.02 if test else 0.01)
 
-    fvm = [latest_compare(p) for p in sorted(glob.glob("runs/fcc_seed*"))]
+    fvm = [latest_compare(r.path) for r in results["FCC"][0]]
     worst = np.max([c["L2"] for c in fvm])
     checks.add("FCC: DPD within 3 % (relative L2) of simpleFoam (nu without walls, no slip), every seed",
                worst < 0.03, f"largest L2 {worst:.4f} (noise L2 {max(c['noiseL2'] for c in fvm):.4f})")
@@ -148,17 +131,15 @@ def plot(results, g, nu_ref, kT_set, kT_of_shear):
         ax[0, 1].plot(*near_both_walls(t["z"], mean["density"], (lo, hi), 2.0), marker, ms=3, mfc="none", label=name)
         ax[1, 0].plot(t["z"], mean["kT"], marker, ms=2.5, mfc="none", label=name)
         ax[1, 1].errorbar([r.q["slip"] for r in runs], [r.q["nu"] for r in runs], fmt=marker, mfc="none", label=name)
-    d = hi - lo
     draw_no_slip_poiseuille(ax[0, 0], (lo, hi), g, nu_ref, f"no slip, nu {nu_ref:.4f} (no-wall box)", lw=1)
     ax[1, 0].axhline(kT_set, color="k", lw=0.8)
-    draw_kT_of_shear(ax[1, 0], 0.5 * (lo + hi), kT_of_shear, g, nu_ref, half_width=0.5 * d)
+    draw_kT_of_shear(ax[1, 0], 0.5 * (lo + hi), kT_of_shear, g, nu_ref, half_width=0.5 * (hi - lo))
     ax[1, 1].axhline(nu_ref, color="k", lw=0.8, label="nu without walls")
     ax[1, 1].axvline(0.0, color="gray", lw=0.8)
     titles = (("velocity (mean over the seeds)", "z", "u_x"), ("density next to the walls", "distance from the wall", "density"),
               ("kT about the local flow", "z", "kT"), ("each seed's fit", "slip length b", "nu"))
-    for a, (title, x, y) in zip(ax.flat, titles):
-        label(a, title, x, y, legend=7)
-    fig.suptitle(f"Scene 1 as published: Poiseuille flow between FCC and random walls with a bounce layer, d = {d:g}, g = {g:g}")
+    label_panels(ax.flat, titles, legend=7)
+    fig.suptitle(f"Scene 1 as published: Poiseuille flow between FCC and random walls with a bounce layer, d = {hi - lo:g}, g = {g:g}")
     save(fig, "poiseuille.png")
     print("Written poiseuille.png and results.dat")
 
