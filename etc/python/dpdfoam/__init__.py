@@ -15,11 +15,15 @@ Modules:
     checks      the checks' bookkeeping: pass / fail / information, a NaN or missing value fails
     published   a tutorial's published.dat and the comparison with the paper's tables
     plots       the figures' common parts (Agg backend)
-    snapshots   the solver's snapshots: the box, the same particles, the chains' bonds
+    snapshots   the solver's snapshots: the box, the same particles, the chains' bonds, the chains'
+                extension across a channel
     mask        an image mask's regions: solid on the bins, distance to it, pore size, an open band
     contraction the contraction tutorials' scene (tutorials/contraction/*)
     pair_temperature  a bulk's kT split into heat and shared motion (etc/pairTemperature.py)
-    timeseries  a run's time series (snapshots' measures, logs) as super-block means
+    timeseries  a run's time series (snapshots' measures, logs) as super-block means over fitSlipLength's
+                super-blocks (SuperBlockWindow), slopes per super-block, values binned by a position
+    channel_blocks  a Poiseuille channel case over fitSlipLength's super-blocks: flux, centre velocity,
+                bulk kT and its heat, nu, asymmetry, densities at the walls, the run's log
     grid        a 2-D profile table averaged along one axis, its region means, a column as an image
     slip        tunable-slip and striped walls: gamma_L for a slip length, slipTensor's runs, stripedSlip's
                 reference with its calibration error, a stripeGrid's layers over the stripes' sectors

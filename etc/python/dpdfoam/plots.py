@@ -76,6 +76,20 @@ def draw_compare_lines(ax, profiles, lines, nu):
                 label=f"simpleFoam, nu = {nu:.4f}")
 
 
+def stat_bars(ax, x, stats, fmt, **style):
+    """BlockMeans (stats.BlockMean: .value, .error) against x, their standard errors as error bars."""
+    ax.errorbar(x, [s.value for s in stats], yerr=[s.error for s in stats], fmt=fmt, **style)
+
+
+def draw_chains_xz(ax, lo, hi, chains):
+    """Chains (snapshots.chains_in_box) in the x-z plane, one colour each, and the box's x edges lo, hi."""
+    for k, p in enumerate(chains):
+        ax.plot(p[:, 0], p[:, 2], "-", color=plt.cm.tab20(k % 20), lw=0.8)
+        ax.plot(p[:, 0], p[:, 2], ".", color=plt.cm.tab20(k % 20), ms=2.5)
+    ax.axvline(lo[0], color="k", lw=0.6)
+    ax.axvline(hi[0], color="k", lw=0.6)
+
+
 def save(fig, path, dpi=110, **layout):
     fig.tight_layout(**layout)
     fig.savefig(path, dpi=dpi)

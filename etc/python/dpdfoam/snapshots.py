@@ -2,8 +2,10 @@
 and the chains' bonds (io/SnapshotBonds.hpp: each bond its two ids, the chain and the vector from its
 first bead to its second, followed across the periodic box), the chains unwrapped from them and
 their shapes; the chains' shapes of every snapshot in a profile's sampled window as a table (the
-command tutorials/polymer/channel/chainExtension.py).
+command tutorials/polymer/channel/chainExtension.py), and that table as super-block means of the
+central and the outer chains (extension_by_offset).
 """
+import argparse
 import glob
 import os
 import sys
@@ -12,6 +14,8 @@ import h5py
 import numpy as np
 
 from .io import dictionary_value
+from .stats import BlockMean
+from .timeseries import binned_profile, block_slopes
 
 
 def snapshot_box(path):
@@ -134,6 +138,23 @@ def extension_rows(case, function="channelProfile"):
     return rows if len(rows) else None
 
 
+def extension_by_offset(rows, window, centre, central_edge, outer_edge, edges):
+    """extension_rows over a SuperBlockWindow: {"central", "outer": spanx, Rg2, chains}, ratio, slope, bins, snapshots."""
+    rows, k = window.rows(rows)
+    offset, span = np.abs(rows[:, 2] - centre), rows[:, 3]
+    snapshots = len(np.unique(rows[:, 0]))
+    out = {"snapshots": snapshots}
+    for name, chosen in (("central", offset < central_edge), ("outer", offset > outer_edge)):
+        index = np.where(chosen, k, -1)
+        out[name] = {"spanx": window.mean(span, index), "Rg2": window.mean(rows[:, 4], index),
+                     "chains": chosen.sum() / max(snapshots, 1)}
+    out["ratio"] = out["outer"]["spanx"].value / out["central"]["spanx"].value
+    # The slope of span_x on the chain's distance from the centre, every chain counted, per super-block.
+    out["slope"] = BlockMean(block_slopes(offset, span, k, window.m))
+    out["bins"] = dict(zip(("z", "spanx", "err"), binned_profile(span, rows[:, 2], edges, k, window.m)))
+    return out
+
+
 def write_extension(case, function):
     """Measures the window's snapshots and writes the table whole (a temporary file, renamed); returns
     what was written, in words. Exits where the snapshots hold no chains."""
@@ -144,3 +165,13 @@ def write_extension(case, function):
     np.savetxt(table + ".tmp", rows, fmt=["%.6g", "%d", "%.6g", "%.6g", "%.6g", "%.6g"], header=EXTENSION_COLUMNS)
     os.replace(table + ".tmp", table)
     return f"chainExtension: {len(np.unique(rows[:, 0]))} snapshots, {len(np.unique(rows[:, 1]))} chains: written {table}"
+
+
+def extension_command(description, argv=None):
+    """chainExtension.py: write_extension of a case's binnedProfile function, from the command line."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("-case", default=".")
+    parser.add_argument("-function", default="channelProfile", help="the binnedProfile whose window is measured")
+    args = parser.parse_args(argv)
+    print(write_extension(args.case, args.function))
+    return 0

@@ -59,6 +59,11 @@ def chi2_bounds(dof, z=Z_SIGMA):
     return tuple((1.0 - a + s * z * math.sqrt(a)) ** 3 for s in (-1.0, 1.0))
 
 
+def values_and_errors(*means):
+    """The values and standard errors of BlockMeans in turn: [value, error, value, error, ...]."""
+    return [x for mean in means for x in (mean.value, mean.error)]
+
+
 class BlockMean:
     """A mean over blocks (super-blocks of a run), its standard error and its degrees of freedom; the
     value may be given (a ratio of means, a fit) with the blocks giving only the spread."""

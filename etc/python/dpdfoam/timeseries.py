@@ -1,13 +1,17 @@
 """Time series of a run (one row per time: snapshots' measures, chain statistics, the log's reports) as
 super-block means: the window [start, start + m length) split into m super-blocks of `length` time
 units, the same as a profile's (fitSlipLength's superBlocks), so that every mean's error is the spread
-of its m super-block means (docs/analysis.md 5.2)."""
+of its m super-block means (docs/analysis.md 5.2): SuperBlockWindow reads the window from fit.dat.
+Besides: per super-block slopes, values binned by a position, and a solver log's run report."""
+import os
 import re
+import sys
 import warnings
 
 import numpy as np
 
-from .io import log_values
+from .io import latest_fit, log_values, read_text, run_finished
+from .stats import BlockMean
 
 
 def block_index(times, start, length, m, closed=True):
@@ -58,3 +62,56 @@ def log_series(text, value_pattern, time_pattern=r"^Time = (\S+)"):
     values = log_values(text, value_pattern)
     n = min(len(times), len(values))
     return np.array(times[:n]), np.array(values[:n])
+
+
+def block_slopes(x, y, index, m, minimum=3):
+    """Per super-block the least-squares slope of y on x, NaN where it holds fewer than `minimum` points."""
+    return [np.polyfit(x[index == j], y[index == j], 1)[0] if np.sum(index == j) >= minimum else np.nan
+            for j in range(m)]
+
+
+def binned_profile(values, positions, edges, index, m):
+    """Values binned by position (bin edges) per super-block: the bins' centres, mean and error (nan_block_mean)."""
+    means = binned_block_means(values, index, np.digitize(positions, edges) - 1, len(edges) - 1, m)
+    return (0.5 * (edges[1:] + edges[:-1]),) + nan_block_mean(means)
+
+
+class SuperBlockWindow:
+    """fitSlipLength's super-blocks of a case (its latest fit.dat) as the window of every other mean: the
+    last m super-blocks of `length` time units before the run's end (start = end - m length); exits (run
+    longer) where the fit has no super-blocks."""
+
+    def __init__(self, case, end, script="plotResults"):
+        self.fit = latest_fit(case)
+        if self.fit["errors"] != "jackknife":
+            note = self.fit.get("superBlocksNote", "no superBlocks entry in system/fitSlipLengthDict")
+            sys.exit(f"{script}: {case}: no super-blocks ({note}): run longer")
+        self.per, self.m = int(self.fit["blocksPerSuperBlock"]), int(self.fit["superBlocks"])
+        self.length = float(self.fit["superBlockLength"])
+        self.start, self.end = end - self.m * self.length, end
+
+    def index(self, times, closed=True):
+        """Each time's super-block (block_index), -1 outside the window."""
+        return block_index(times, self.start, self.length, self.m, closed)
+
+    def rows(self, rows, closed=True):
+        """The rows (first column: time) within the window and their super-blocks (rows_in_blocks)."""
+        return rows_in_blocks(rows, self.start, self.length, self.m, closed)
+
+    def mean(self, values, index):
+        """The BlockMean of values over the super-blocks (index: each value's, -1 leaves it out)."""
+        return BlockMean(block_means(values, index, self.m))
+
+    def column_means(self, rows, columns, closed=True):
+        """The BlockMean of each of a table's columns (first column: time) over the window."""
+        index = self.index(rows[:, 0], closed)
+        return [self.mean(rows[:, column], index) for column in columns]
+
+
+def run_report(path, value_pattern):
+    """A solver log's particles ('Particles : N (M mobile'), run_finished and log_series; 0, NaN, ([], []) without it."""
+    if not os.path.exists(path):
+        return 0, (float("nan"),) * 3, ([], [])
+    text = read_text(path)
+    particles = re.search(r"Particles\s*:\s*(\d+)\s*\((\d+) mobile", text)
+    return int(particles.group(1)) if particles else 0, run_finished(text), log_series(text, value_pattern)

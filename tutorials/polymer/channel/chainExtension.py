@@ -13,20 +13,9 @@ chains, with errors. Written whole or not at all:
 
     chainExtension.py [-case DIR] [-function NAME (channelProfile)]
 """
-import argparse
 import sys
 
-from dpdfoam.snapshots import write_extension
-
-
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("-case", default=".")
-    parser.add_argument("-function", default="channelProfile", help="the binnedProfile whose window is measured")
-    args = parser.parse_args()
-    print(write_extension(args.case, args.function))
-    return 0
-
+from dpdfoam.snapshots import extension_command
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(extension_command(__doc__.splitlines()[0]))

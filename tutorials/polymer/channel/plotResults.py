@@ -24,20 +24,19 @@ extension) needs it above 3 standard errors, which noise only makes harder.
 """
 import math
 import os
-import re
 import sys
 
 import numpy as np
 
-from dpdfoam.blocks import SampledBins, band_share, mirror_asymmetry, region_mean, region_temperature
+from dpdfoam.blocks import band_share
+from dpdfoam.channel_blocks import SuperBlockChannel
 from dpdfoam.checks import Checks, write_results
-from dpdfoam.grid import averaged_along, image, weighted_mean
-from dpdfoam.io import dictionary_value, latest_dir, read_columns, read_dict, read_sweep, read_table, read_text, run_finished
-from dpdfoam.pair_temperature import case_rows
-from dpdfoam.plots import label, mark_walls, plt, save
-from dpdfoam.snapshots import chains_in_box, extension_rows
-from dpdfoam.stats import BlockMean as Stat, combined
-from dpdfoam.timeseries import binned_block_means, block_index, block_means, log_series, nan_block_mean, rows_in_blocks
+from dpdfoam.grid import averaged_along, image
+from dpdfoam.io import dictionary_value, latest_dir, latest_profile, read_columns, read_sweep, read_table
+from dpdfoam.plots import draw_chains_xz, draw_field, label, label_panels, mark_walls, plt, save, stat_bars
+from dpdfoam.snapshots import chains_in_box, extension_by_offset, extension_rows
+from dpdfoam.stats import BlockMean as Stat, combined, values_and_errors
+from dpdfoam.sweep import sweep_colours
 
 # The fluid (constant/dpdProperties): kT, a, rho, and Groot and Warren's equation of state
 # p = rho kT + alpha a rho^2 (alpha = 0.101), whose isothermal sound speed is c^2 = dp/drho = kT + 2 alpha a rho.
@@ -57,82 +56,31 @@ HEAT_BUDGET = {False: 0.01, True: 0.03}          # of kT_set; key: test
 SYMMETRY_BUDGET = {False: 0.01, True: 0.05}      # of U; key: test or low g
 
 
-class Case:
-    """One case of the sweep: its profiles, fit, chains and log, with super-block statistics."""
+class Case(SuperBlockChannel):
+    """One case of the sweep: its flow and heat (SuperBlockChannel), beads, chains and the paper's grid."""
 
     def __init__(self, path, chains, length):
-        self.path, self.chains, self.length = path, int(chains), int(length)
+        super().__init__(path, "channelProfile")
+        self.chains, self.length = int(chains), int(length)
         self.beads = self.chains * self.length
         self.label = "no chains" if self.chains == 0 else f"{self.chains}x{self.length}"
-        control = os.path.join(path, "system/controlDict")
-        self.start = float(dictionary_value(control, "functions/channelProfile/startTime"))
-        self.end = float(dictionary_value(control, "endTime"))
-        self.fit = read_dict(latest_dir(os.path.join(path, "postProcessing/fitSlipLength/*")) + "/fit.dat")
-        if self.fit["errors"] != "jackknife":
-            sys.exit(f"plotResults: {path}: no super-blocks ({self.fit.get('superBlocksNote', 'no superBlocks entry in system/fitSlipLengthDict')}): run longer")
-        self.walls, self.g = tuple(self.fit["wallPosition"]), self.fit["g"]
-        self.d, self.centre = self.walls[1] - self.walls[0], 0.5 * (self.walls[0] + self.walls[1])
-        self.h = 0.5 * self.d
-        # fitSlipLength's super-blocks (its jackknife gives nu's error); every other mean uses the same,
-        # over [window_start, end): the earliest sampling blocks left out, if any.
-        self.per, self.m, self.super_time = int(self.fit["blocksPerSuperBlock"]), int(self.fit["superBlocks"]), float(self.fit["superBlockLength"])
-        self.window_start = self.end - self.m * self.super_time
-        pp = latest_dir(os.path.join(path, "postProcessing/profileBins/*"))
+        pp = self.profiles
         self.table, self.fluid_table = (read_table(os.path.join(pp, f"{n}Profile.dat")) for n in ("channel", "fluid"))
         self.bead_table = read_table(os.path.join(pp, "beadProfile.dat")) if self.chains else None
-        time_dir = latest_dir(os.path.join(path, "[0-9]*"))
-        self.snapshot, self.snapshot0 = os.path.join(time_dir, "particles.h5"), os.path.join(path, "0", "particles.h5")
-        sampled = lambda name: SampledBins(os.path.join(time_dir, f"sampling/{name}.h5"))  # noqa: E731
-        self._flow(sampled("channelProfile"))
-        self._heat()
-        _, fluid_bulk, fluid_near, self.kT_fluid = self._regions(sampled("fluidProfile"))
+        self.snapshot, self.snapshot0 = os.path.join(self.time_dir, "particles.h5"), os.path.join(path, "0", "particles.h5")
+        self.measure_flow()
+        self.measure_heat()
+        _, fluid_bulk, fluid_near, self.kT_fluid = self.regions(self.sampled("fluidProfile"))
         self.fluid_bulk, self.fluid_near = Stat(fluid_bulk), Stat(fluid_near)
         if self.chains:
-            self._beads(sampled("beadProfile"))
+            self._beads(self.sampled("beadProfile"))
             self._chains(latest_dir(os.path.join(path, "postProcessing/chains/*")))
             self._extension()
-        self._paper(control, pp)
-        self._log()
-
-    def bulk(self, z):
-        return np.abs(z - self.centre) < 0.25 * self.d  # the central half of the channel
-
-    def near(self, z):
-        return (z - self.walls[0] < 1.0) | (self.walls[1] - z < 1.0)  # within one cutoff of a wall
-
-    def _flow(self, prof):
-        sums, _ = prof.super_blocks(self.per, self.m)
-        z, count, sum_u = prof.z, sums[..., 0], sums[..., 1]
-        inside = (z > self.walls[0]) & (z < self.walls[1])
-        # Mass-weighted mean velocity of all mobile particles (flux / (rho d)) and the centre velocity.
-        self.U = Stat(region_mean(sum_u, count, inside))
-        self.uc = Stat(region_mean(sum_u, count, np.abs(z - self.centre) < 1.0))
-        self.kT = Stat(region_temperature(sums, self.bulk(z)))
-        self.kT_mean = region_temperature(sums.sum(axis=0), inside)
-        self.nu = Stat.of(self.fit["nu"], self.fit["nuError"], self.m - 1)  # fitSlipLength's jackknife error
-        self.asym = mirror_asymmetry(z, self.centre, count, sum_u)
-
-    def _heat(self):
-        """The bulk's kT split into heat (pair) and motion neighbours share (shared), per snapshot of the
-        sampled window (etc/pairTemperature.py: the case's table, or measured now from its snapshots,
-        over the central half of channelProfile's range), as super-block means."""
-        rows, k = rows_in_blocks(case_rows(self.path, "channelProfile"), self.window_start, self.super_time, self.m)
-        if np.bincount(k, minlength=self.m).min() < 2:
-            sys.exit(f"plotResults: {self.path} has fewer than 2 snapshots in a super-block of {self.super_time:g} "
-                     "(writeInterval of system/controlDict): rerun the case")
-        self.kT_single, self.kT_pair, self.kT_shared = (Stat(block_means(rows[:, col], k, self.m)) for col in (1, 2, 3))
-        self.snapshots = len(rows)
-
-    def _regions(self, bins):
-        """A profile's super-block sums, and per super-block its density in the bulk and within one
-        cutoff of a wall, and the bulk's kT."""
-        sums, samples = bins.super_blocks(self.per, self.m)
-        rho = bins.density(sums, samples)
-        return (sums, rho[:, self.bulk(bins.z)].mean(axis=1), rho[:, self.near(bins.z)].mean(axis=1),
-                Stat(region_temperature(sums, self.bulk(bins.z))))
+        self._paper(os.path.join(path, "system/controlDict"), pp)
+        self.read_log()
 
     def _beads(self, bins):
-        sums, bulk_rho, near_rho, self.kT_beads = self._regions(bins)
+        sums, bulk_rho, near_rho, self.kT_beads = self.regions(bins)
         self.bead_bulk, self.bead_near = Stat(bulk_rho), Stat(near_rho)
         self.depletion = Stat(near_rho / bulk_rho, near_rho.mean() / bulk_rho.mean())
         count = sums[..., 0]
@@ -143,35 +91,23 @@ class Case:
 
     def _chains(self, directory):
         data = np.loadtxt(os.path.join(directory, "chainStatistics.dat"), comments="#", ndmin=2)
-        k = block_index(data[:, 0], self.window_start, self.super_time, self.m, closed=False)
-        self.Rg2, self.Ree2, self.Reex2, self.spanx = (Stat(block_means(data[:, col], k, self.m)) for col in (1, 2, 4, 5))
+        self.Rg2, self.Ree2, self.Reex2, self.spanx = self.window.column_means(data, (1, 2, 4, 5), closed=False)
         # R_g^2 and span by where the chain's centre lies across the channel (the whole sampling).
         self.chain_bins = read_columns(os.path.join(directory, "chainBins.dat"), ("z", "samples", "Rg2", "spanx"))
 
     def _extension(self):
         """The chains' extension along the flow (span x) and R_g^2 by where their centre lies, from the
         snapshots (chainExtension.py, dpdfoam.snapshots): the central chains (centre within h / 3 of the channel's centre)
-        against the outer ones (beyond 2 h / 3), per super-block, and binned across the channel."""
+        against the outer ones (beyond 2 h / 3), per super-block, and binned across the channel. The slope of
+        span_x on the distance from the centre counts every chain (what the check reads: the outer third
+        holds few chains where the beads are depleted at the walls)."""
         rows = extension_rows(self.path, "channelProfile")
         if rows is None:
             sys.exit(f"plotResults: {self.path} has neither postProcessing/chainExtension nor the snapshots to measure it")
-        rows, k = rows_in_blocks(rows, self.window_start, self.super_time, self.m)
-        offset, span = np.abs(rows[:, 2] - self.centre), rows[:, 3]
         self.central_edge, self.outer_edge = CENTRAL_FRACTION * self.h, OUTER_FRACTION * self.h
-        snapshots = len(np.unique(rows[:, 0]))
-        self.ext = {"snapshots": snapshots}
-        for name, sel in (("central", offset < self.central_edge), ("outer", offset > self.outer_edge)):
-            self.ext[name] = {"spanx": Stat(block_means(span, np.where(sel, k, -1), self.m)),
-                              "Rg2": Stat(block_means(rows[:, 4], np.where(sel, k, -1), self.m)), "chains": sel.sum() / max(snapshots, 1)}
-        self.ext["ratio"] = self.ext["outer"]["spanx"].value / self.ext["central"]["spanx"].value
-        # The slope of span_x on the distance from the centre, every chain counted (what the check reads:
-        # the outer third holds few chains where the beads are depleted at the walls).
-        self.ext["slope"] = Stat([np.polyfit(offset[k == j], rows[k == j, 3], 1)[0] if np.sum(k == j) > 2 else np.nan
-                                  for j in range(self.m)])
         # Binned by the centre (bins of 2, as chainBins), errors over the super-blocks.
         edges = np.arange(self.walls[0], self.walls[1] + 1e-9, 2.0 if self.d > 12 else 1.0)
-        mean, error = nan_block_mean(binned_block_means(span, k, np.digitize(rows[:, 2], edges) - 1, len(edges) - 1, self.m))
-        self.ext["bins"] = {"z": 0.5 * (edges[1:] + edges[:-1]), "spanx": mean, "err": error}
+        self.ext = extension_by_offset(rows, self.window, self.centre, self.central_edge, self.outer_edge, edges)
 
     def _paper(self, control, pp):
         """The paper's grid over its window (paperField, paperFluid, paperBeads: 200 x 20 bins in the
@@ -180,34 +116,16 @@ class Case:
         if not os.path.exists(os.path.join(pp, "paperField.dat")):
             return
         field, fluid, beads = (averaged_along(read_table(os.path.join(pp, f"paper{n}.dat"))) for n in ("Field", "Fluid", "Beads"))
-        z, n = field["z"], field["count"]
+        z = field["z"]
         bulk, near = self.bulk(z), self.near(z)
-        ux = lambda region=slice(None): weighted_mean(field["ux"], n, region)  # noqa: E731
         p = {"start": float(dictionary_value(control, "functions/paperField/startTime")), "nz": len(z), "nx": field["nx"],
-             "field": field, "fluid": fluid, "beads": beads, "U": ux(), "uc": ux(np.abs(z - self.centre) < 1.0),
-             "A": ux(z > self.centre) - ux(z < self.centre), "kT": weighted_mean(field["kT"], n, bulk),
+             "field": field, "fluid": fluid, "beads": beads, **self.grid_flow(field),
              "fluid_bulk": float(fluid["density"][bulk].mean()), "fluid_near": float(fluid["density"][near].mean())}
         if self.chains:
-            edge = SHARE_FRACTION * self.h
+            edge = self.share_edge
             p["share"] = float(band_share(beads["count"], z, z[1] - z[0], self.centre - edge, self.centre + edge))
             p["near_bulk"] = float(beads["density"][near].mean() / beads["density"][bulk].mean())
         self.paper = p
-
-    def _log(self):
-        self.steps = self.seconds = self.rate = float("nan")
-        self.particles, self.history = 0, ([], [])
-        path = os.path.join(self.path, "log.dpdFoamLike")
-        if not os.path.exists(path):
-            return
-        text = read_text(path)
-        m = re.search(r"Particles\s*:\s*(\d+)\s*\((\d+) mobile", text)
-        self.particles = int(m.group(1)) if m else 0
-        self.steps, self.seconds, self.rate = run_finished(text)
-        self.history = log_series(text, r"meanVelocity = \((\S+)")
-
-    @property
-    def reynolds(self):
-        return self.uc.value * self.d / self.nu.value
 
     @property
     def mach(self):
@@ -377,13 +295,13 @@ def case_lines(c):
 def table_line(c):
     """A case's row of the table (NaN where a case without chains has no beads or chains, or a case no
     paper's grid)."""
-    pair = lambda s: [s.value, s.error]  # noqa: E731
     nan = float("nan")
-    chains = ([*pair(c.depletion), *pair(c.Rg2), *pair(c.Ree2), *pair(c.Reex2), *pair(c.spanx)] if c.chains else [nan] * 10)
-    row = ([c.chains, c.length, c.beads, *pair(c.U), *pair(c.uc), c.deficit, c.deficit_error, *pair(c.nu), *pair(c.kT),
-            *pair(c.kT_fluid)] + (pair(c.kT_beads) if c.chains else [nan] * 2) + [*pair(c.kT_pair), *pair(c.kT_shared)]
-           + chains + [c.reynolds, c.mach, c.rate, c.seconds, *pair(c.asym["A"]), *pair(c.fluid_bulk), *pair(c.fluid_near)]
-           + ([*pair(c.share), *pair(c.ext["outer"]["spanx"]), *pair(c.ext["central"]["spanx"])] if c.chains else [nan] * 6)
+    row = ([c.chains, c.length, c.beads, *values_and_errors(c.U, c.uc), c.deficit, c.deficit_error,
+            *values_and_errors(c.nu, c.kT, c.kT_fluid)] + (values_and_errors(c.kT_beads) if c.chains else [nan] * 2)
+           + values_and_errors(c.kT_pair, c.kT_shared)
+           + (values_and_errors(c.depletion, c.Rg2, c.Ree2, c.Reex2, c.spanx) if c.chains else [nan] * 10)
+           + [c.reynolds, c.mach, c.rate, c.seconds, *values_and_errors(c.asym["A"], c.fluid_bulk, c.fluid_near)]
+           + (values_and_errors(c.share, c.ext["outer"]["spanx"], c.ext["central"]["spanx"]) if c.chains else [nan] * 6)
            + ([c.paper["U"], c.paper["A"], c.paper.get("share", nan)] if c.paper else [nan] * 3))
     return "table " + c.label.replace(" ", "_") + " " + " ".join(f"{v:.6g}" for v in row)
 
@@ -411,7 +329,7 @@ def results_lines(cases, ref, test, name):
     lines = [f"# FENE chains in Poiseuille flow between frozen walls (docs/scenes.md scene 7){' [test]' if test else ''}"
              f"{f' [{name}]' if name else ''}",
              f"# d = {c0.d:g}, g = {c0.g:g}; sampled {c0.start:g}-{c0.end:g}; errors: standard errors over "
-             f"{c0.m} super-blocks of {c0.super_time:g} time units",
+             f"{c0.window.m} super-blocks of {c0.window.length:g} time units",
              "# U: mean velocity of all mobile particles (flux / (rho d)); uc: velocity within 1 of the centre;",
              "# deficit: 1 - U / U(no chains); asymmetry: U(upper half) - U(lower half) and u(z) - u(-z) per pair of bins",
              "#   (rms, its noise = the rms of the pairs' standard errors, largest, chi2/dof against zero);",
@@ -436,12 +354,6 @@ def results_lines(cases, ref, test, name):
         "", f"# viscous heating of the bulk without chains (pair kT): H0 = pair kT0 - kT_set = {ref.kT_pair.value - KT_SET:+.5f}",
         f"# cost of the bonds: particle-steps/s without chains {ref.rate:.3e}; "
         + ", ".join(f"{c.label} {c.rate:.3e} ({100 * (c.rate / ref.rate - 1):+.1f} %)" for c in cases if c.chains)]
-
-
-
-def stat_bars(ax, x, stats, fmt, **style):
-    """Values with their standard errors as error bars."""
-    ax.errorbar(x, [s.value for s in stats], yerr=[s.error for s in stats], fmt=fmt, **style)
 
 
 def draw_profiles(ax, cases, ref, colour):
@@ -475,16 +387,15 @@ def draw_profiles(ax, cases, ref, colour):
                               label=f"{c.label}: outer / central {c.ext['ratio']:.2f}")
     share = next((c.share_edge for c in cases if c.chains), None)
     dotted = "; dotted: the paper's grid and window" if ref.paper else ""
-    for a, title, ylabel in ((ax[0, 0], f"velocity (fluid and beads){dotted}", "u_x"),
-                             (ax[0, 1], "density: all mobile (solid), the fluid (dashed)", "number density"),
-                             (ax[0, 2], "kT about the local flow (fluid and beads); dashed: the bulk's heat", "kT"),
-                             (ax[0, 3], "kT of the fluid (solid) and of the beads (dashed)", "kT"),
-                             (ax[1, 0], f"bead density{dotted}; dashed: |z| = {share:.3g}"
-                              if share else "bead density", "bead number density"),
-                             (ax[1, 2], "R_g^2 by where the chain's centre lies (chainStatistics)", "<R_g^2>"),
-                             (ax[1, 3], "extension along x (span) by where the chain's centre lies", "span_x")):
-        label(a, title, "z", ylabel, legend=7)
-        mark_walls(a, ref.walls)
+    across = [ax[0, 0], ax[0, 1], ax[0, 2], ax[0, 3], ax[1, 0], ax[1, 2], ax[1, 3]]
+    label_panels(across, [(title, "z", ylabel) for title, ylabel in (
+        (f"velocity (fluid and beads){dotted}", "u_x"), ("density: all mobile (solid), the fluid (dashed)", "number density"),
+        ("kT about the local flow (fluid and beads); dashed: the bulk's heat", "kT"),
+        ("kT of the fluid (solid) and of the beads (dashed)", "kT"),
+        (f"bead density{dotted}; dashed: |z| = {share:.3g}" if share else "bead density", "bead number density"),
+        ("R_g^2 by where the chain's centre lies (chainStatistics)", "<R_g^2>"),
+        ("extension along x (span) by where the chain's centre lies", "span_x"))], legend=7)
+    mark_walls(across, ref.walls)
     label(ax[1, 1], "asymmetry u(z) - u(-z); shaded: 3 standard errors", "|z| (distance from the centre)", "u(z) - u(-z)", legend=7)
     ax[1, 1].axhline(0.0, color="k", lw=0.6)
     mark_walls([ax[0, 2], ax[0, 3]], (ref.centre - 0.25 * ref.d, ref.centre + 0.25 * ref.d), color="k", lw=0.6, ls="--")
@@ -521,7 +432,7 @@ def draw_sweeps(ax, cases, ref, n_sweep, l_sweep, colour):
     for c in cases:  # the log's mean velocity of the mobile particles
         if len(c.history[0]):
             ax[2, 3].plot(*c.history, "-", color=colour[c.label], lw=1, label=c.label)
-    ax[2, 3].axvspan(ref.window_start, ref.end, color="0.9", label="sampled")
+    ax[2, 3].axvspan(ref.window.start, ref.end, color="0.9", label="sampled")
     if ref.paper:
         ax[2, 3].axvspan(ref.paper["start"], ref.end, color="0.75", label="the paper's window")
     label(ax[2, 3], "start-up (the run's log)", "time", "mean velocity of the mobile particles", legend=7)
@@ -529,11 +440,7 @@ def draw_sweeps(ax, cases, ref, n_sweep, l_sweep, colour):
 
 def draw_chains(a, show, snapshot):
     """The chains of a case in a snapshot, x-z, each unwrapped from its bond vectors with its centre in the box."""
-    lo, hi, chains = chains_in_box(snapshot)
-    for k, p in enumerate(chains):
-        a.plot(p[:, 0], p[:, 2], "-", color=plt.cm.tab20(k % 20), lw=0.8)
-        a.plot(p[:, 0], p[:, 2], ".", color=plt.cm.tab20(k % 20), ms=2.5)
-    a.axvline(lo[0], color="k", lw=0.6); a.axvline(hi[0], color="k", lw=0.6)
+    draw_chains_xz(a, *chains_in_box(snapshot))
     for zw in show.walls:
         a.axhline(zw, color="gray", ls=":")
     label(a, f"{show.label}: the chains at t = {os.path.basename(os.path.dirname(snapshot))}, x-z projection, one colour per chain",
@@ -543,16 +450,14 @@ def draw_chains(a, show, snapshot):
 
 def draw_bead_map(fig, a, case):
     """The beads' density on the paper's grid (z-x) over its window."""
-    table = read_table(os.path.join(latest_dir(os.path.join(case.path, "postProcessing/profileBins/*")), "paperBeads.dat"))
-    grid, extent = image(table, "density")
-    fig.colorbar(a.imshow(grid, origin="lower", aspect="auto", cmap="viridis", extent=extent), ax=a, label="bead density")
-    label(a, f"{case.label}: bead density on the paper's grid ({grid.shape[0]} x {grid.shape[1]}, z x), "
-          f"t {case.paper['start']:g}-{case.end:g}", "x", "z")
+    grid, extent = image(latest_profile(case.path, "paperBeads"), "density")
+    draw_field(fig, a, grid, extent, f"{case.label}: bead density on the paper's grid ({grid.shape[0]} x {grid.shape[1]}, z x), "
+               f"t {case.paper['start']:g}-{case.end:g}", "bead density", aspect="auto")
+    label(a, None, "x", "z")
 
 
 def plot(path, cases, ref, n_sweep, l_sweep, name):
-    colours = plt.cm.viridis(np.linspace(0.0, 0.9, len(cases)))
-    colour = {c.label: colours[k] for k, c in enumerate(cases)}
+    colour = dict(zip((c.label for c in cases), sweep_colours(len(cases))))
     chained = [c for c in cases if c.chains]
     show = max(chained, key=lambda c: (c.length, c.beads))      # the longest chains
     most = max(chained, key=lambda c: (c.chains, c.beads))      # the most chains
