@@ -179,19 +179,28 @@ void CellList::sort(Particles& p, SortForces forces) {
     double* __restrict rz = p.rz.data();
     std::uint32_t* __restrict key = keyOf_.data();
     const Eigen::Vector3d lo = box_.lo, hi = box_.hi;
-    constexpr long kBlock = 8;
+    // A block's keys are bounded while they are still in the cache (SortKeyBlocks).
+    constexpr long kBlock = 8, kKeyBlock = SortKeyBlocks::kBlock;
+    keyBlocks_.resize(static_cast<std::uint32_t>(n));
 #pragma omp parallel for schedule(static)
-    for (long b = 0; b < n; b += kBlock) {
-        const long e = std::min(b + kBlock, n);
-        if (anyOutside(rx + b, ry + b, rz + b, e - b, lo, hi))
-            for (long i = b; i < e; ++i) box_.wrapPoint(rx[i], ry[i], rz[i]);
-        for (long i = b; i < e; ++i)
-            key[i] = 2 * static_cast<std::uint32_t>(cellIndex(axisCell(rx[i], 0), axisCell(ry[i], 1), axisCell(rz[i], 2)));
-        if (split)
-            for (long i = b; i < e; ++i) key[i] += isFrozenSpecies(p.species[i]) ? 1u : 0u;
+    for (long s = 0; s < n; s += kKeyBlock) {
+        const long sEnd = std::min(s + kKeyBlock, n);
+        for (long b = s; b < sEnd; b += kBlock) {
+            const long e = std::min(b + kBlock, sEnd);
+            if (anyOutside(rx + b, ry + b, rz + b, e - b, lo, hi))
+                for (long i = b; i < e; ++i) box_.wrapPoint(rx[i], ry[i], rz[i]);
+            for (long i = b; i < e; ++i)
+                key[i] = 2 * static_cast<std::uint32_t>(cellIndex(axisCell(rx[i], 0), axisCell(ry[i], 1), axisCell(rz[i], 2)));
+            if (split)
+                for (long i = b; i < e; ++i) key[i] += isFrozenSpecies(p.species[i]) ? 1u : 0u;
+        }
+        keyBlocks_.record(static_cast<std::uint32_t>(s), key + s, static_cast<std::uint32_t>(sEnd - s));
     }
     const std::uint32_t discardKey = 2 * static_cast<std::uint32_t>(numCells());
-    for (const std::uint32_t i : discarded_) key[i] = discardKey;
+    for (const std::uint32_t i : discarded_) {
+        key[i] = discardKey;
+        keyBlocks_.widen(i, discardKey);
+    }
     discarded_.clear();
     countingSort();
 #pragma omp parallel
@@ -208,8 +217,8 @@ void CellList::countingSort() {
     // with it the summation order of forces) is a function of the state alone. In parallel without
     // per-thread counts: each thread owns a range of keys (of the key windows: all keys, or a rank's
     // planes), reads every key, and counts and places only its own, in particle order. The keys are
-    // read once per thread (4 bytes a particle, streamed); counts and places are written once. The
-    // result does not depend on the number of threads.
+    // read where they may hold the thread's own (SortKeyBlocks: about a thread's share of them); counts
+    // and places are written once. The result does not depend on the number of threads.
     const std::uint32_t n = static_cast<std::uint32_t>(keyOf_.size());
     const std::uint32_t nKeys = static_cast<std::uint32_t>(start_.size() - 1);
     const std::uint32_t* key = keyOf_.data();
@@ -250,8 +259,8 @@ void CellList::countingSort() {
         const std::uint32_t width = kEnd - kBegin;
         // start[k + 1]: the count of key k, then the running sum over this thread's keys up to k.
         for (const Part& part : parts) std::fill(start + part.begin + 1, start + part.end + 1, 0u);
-        for (std::uint32_t i = 0; i < n; ++i)
-            if (key[i] - kBegin < width) ++start[key[i] + 1];
+        const SortKeyBlocks& blocks = keyBlocks_;
+        blocks.forEachKeyIn(key, 0, n, kBegin, width, [&](std::uint32_t i) { ++start[key[i] + 1]; });
         std::uint32_t running = 0;
         for (const Part& part : parts)
             for (std::uint32_t k = part.begin; k < part.end; ++k) {
@@ -280,13 +289,11 @@ void CellList::countingSort() {
                 start[k + 1] = begin;
             }
         }
+        const auto placeOne = [&](std::uint32_t i) { order[fill[key[i]]++] = i; };
         if (place && visit.empty()) {
-            for (std::uint32_t i = 0; i < n; ++i)
-                if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
+            blocks.forEachKeyIn(key, 0, n, kBegin, width, placeOne);
         } else if (place) {  // the ranges in the order given (setVisitOrder)
-            for (const auto& [first, end] : visit)
-                for (std::uint32_t i = first; i < end; ++i)
-                    if (key[i] - kBegin < width) order[fill[key[i]]++] = i;
+            for (const auto& [first, end] : visit) blocks.forEachKeyIn(key, first, end, kBegin, width, placeOne);
         }
     }
     visit_.clear();

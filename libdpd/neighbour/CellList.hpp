@@ -11,6 +11,7 @@
 // ones, so the pair loop can pass frozen-frozen pairs (which never interact) without visiting them.
 #include "core/Box.hpp"
 #include "core/Particles.hpp"
+#include "neighbour/SortKeyBlocks.hpp"
 
 #include <algorithm>
 #include <array>
@@ -109,6 +110,7 @@ private:
     std::vector<std::uint32_t> discarded_;
     // Kept between sorts, so a step allocates nothing.
     ParticleArray<std::uint32_t> keyOf_, order_, fill_;
+    SortKeyBlocks keyBlocks_;  // keyOf_'s bounds per block, for the threads' passes over it
     std::array<ParticleArray<double>, 3> scratch_;
     ParticleArray<std::uint64_t> idScratch_;
     ParticleArray<std::uint8_t> speciesScratch_;

@@ -17,6 +17,7 @@
 #include "forces/DpdPairForce.hpp"
 #include "forces/PairForceLoop.hpp"
 #include "neighbour/CellList.hpp"
+#include "neighbour/SortKeyBlocks.hpp"
 #include "random/PairRandom.hpp"
 #include "../forces/SinglePrecisionPairs.hpp"
 
@@ -734,4 +735,57 @@ TEST(CellList, WithThreeGhostPlanesTheSortKeepsTheStartsOfAll) {
         EXPECT_THROW(oneGhostPlane.sortParticles(again), std::logic_error) << threads;
     }
     omp_set_num_threads(1);
+}
+
+// The sort is the stable sort by (cell, mobile before frozen) on any number of threads, for particles
+// nearly in cell order (a sorted box whose particles then moved up to 0.3 along each axis, some out of
+// the box), as every step after the first sorts them: the case where a thread passes over the blocks
+// of keys that are not its own (neighbour/SortKeyBlocks.hpp). Large enough for ten blocks a thread.
+TEST(CellList, TheSortIsTheStableSortByCellOnAnyNumberOfThreadsWhenNearlySorted) {
+    Box box;
+    box.lo = Eigen::Vector3d(-3, 0, 0);
+    box.hi = Eigen::Vector3d(57, 10, 10);
+    Particles start = randomParticles(box, 3.0, 31);
+    for (std::size_t k = 0; k < start.size(); ++k) start.species[k] = start.id[k] % 10 == 3 ? 1 : 0;
+    const std::vector<std::uint8_t> frozen{0, 1};
+    CellList first;
+    first.setup(box, 1.0);
+    first.sortParticles(start, frozen);
+    const PairRandom rng(8);
+    for (std::size_t k = 0; k < start.size(); ++k) {
+        const auto u = rng.particleUniforms(1, start.id[k], kStreamInitialPosition);
+        start.rx[k] += 0.6 * (u[0] - 0.5);
+        start.ry[k] += 0.6 * (u[1] - 0.5);
+        start.rz[k] += 0.6 * (u[2] - 0.5);
+    }
+    const int saved = omp_get_max_threads();
+    ParticleArray<std::uint64_t> expected;
+    for (int threads : {1, 2, 3, 7}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        omp_set_num_threads(threads);
+        Particles q = start;
+        CellList cells;
+        cells.setup(box, 1.0);
+        cells.sortParticles(q, frozen);
+        if (expected.empty()) {  // the reference, from the wrapped positions the sort left
+            std::map<std::uint64_t, int> keyOf;
+            for (std::size_t k = 0; k < q.size(); ++k)
+                keyOf[q.id[k]] = 2 * cells.cellIndex(cells.axisCell(q.rx[k], 0), cells.axisCell(q.ry[k], 1),
+                                                     cells.axisCell(q.rz[k], 2)) + frozen[q.species[k]];
+            expected = start.id;
+            std::stable_sort(expected.begin(), expected.end(),
+                             [&](std::uint64_t a, std::uint64_t b) { return keyOf.at(a) < keyOf.at(b); });
+            ASSERT_GT(q.size(), 10u * SortKeyBlocks::kBlock * 7);
+        }
+        EXPECT_EQ(q.id, expected);
+        for (int c = 0; c < cells.numCells(); ++c) {
+            ASSERT_LE(cells.mobileEnd(c), cells.cellStart(c + 1));
+            for (std::uint32_t k = cells.cellStart(c); k < cells.cellStart(c + 1); ++k) {
+                ASSERT_EQ(cells.cellIndex(cells.axisCell(q.rx[k], 0), cells.axisCell(q.ry[k], 1), cells.axisCell(q.rz[k], 2)), c);
+                ASSERT_EQ(frozen[q.species[k]] != 0, k >= cells.mobileEnd(c)) << "cell " << c;
+            }
+        }
+        EXPECT_EQ(cells.cellStart(cells.numCells()), q.size());
+    }
+    omp_set_num_threads(saved);
 }
