@@ -17,7 +17,8 @@ Modules:
     plots       the figures' common parts (Agg backend)
     snapshots   the solver's snapshots: the box, the same particles, the chains' bonds, the chains'
                 extension across a channel
-    mask        an image mask's regions: solid on the bins, distance to it, pore size, an open band
+    mask        an image mask's regions: solid on the bins, distance to it, pore size, an open band and
+                whether a line runs along it
     contraction the contraction tutorials' scene (tutorials/contraction/*)
     pair_temperature  a bulk's kT split into heat and shared motion (etc/pairTemperature.py)
     timeseries  a run's time series (snapshots' measures, logs) as super-block means over fitSlipLength's
@@ -28,7 +29,8 @@ Modules:
     slip        tunable-slip and striped walls: gamma_L for a slip length, calibrateWall's runs, slipTensor's
                 runs, stripedSlip's reference with its calibration error and the checks against it, a
                 stripeGrid's layers over the stripes' sectors
-    fields      an x-z grid of bins as arrays, a continuum twin's cells on it, relative L2, the bins' kT
+    fields      an x-z grid of bins as arrays, a continuum twin's cells on it, relative L2 (overall and per
+                class of pore size or distance to the solid), the bins' kT beside the log's series
     sweep       runSweep's sweeps of a wall parameter (variant, slip, published comparison, trend checks,
                 profiles), a profile near its walls, channels compared with long-block errors
     stepstudy   a study of the time step per integrator: cost model, where an error passes a level,

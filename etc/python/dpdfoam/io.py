@@ -147,6 +147,25 @@ def set_dictionary_value(path, entry, value):
     subprocess.run(["dpdDictionary", path, "-entry", entry, "-set", value], check=True, capture_output=True, text=True)
 
 
+def vector_text(values):
+    """Numbers as a dictionary's list '(a b c)', each written with :g."""
+    return "(" + " ".join(f"{v:g}" for v in values) + ")"
+
+
+def case_line(name, path="system/makeFoamCaseDict"):
+    """The start and end (vectors) of the line `name` of makeFoamCaseDict's lines; None without that line."""
+    try:
+        return tuple(vector(dictionary_value(path, f"lines/{name}/{k}")) for k in ("start", "end"))
+    except subprocess.CalledProcessError:
+        return None
+
+
+def set_case_line(name, start, end, n_points, path="system/makeFoamCaseDict"):
+    """Sets the line `name` of makeFoamCaseDict's lines (set_dictionary_value: the file kept as .orig)."""
+    for key, value in (("start", vector_text(start)), ("end", vector_text(end)), ("nPoints", f"{n_points}")):
+        set_dictionary_value(path, f"lines/{name}/{key}", value)
+
+
 def read_dict(path):
     """The plain `key value;` and `key (a b ...);` entries of a dictionary the tools write (fit.dat,
     compare.dat): numbers as floats, lists as lists of floats, anything else as a string (a quoted one
@@ -178,6 +197,16 @@ def read_compare(path):
     with open(path) as f:
         head, _, rest = f.read().partition("\nlines")
     return parse_dict(head), {name: parse_dict(body) for name, body in re.findall(r"(\w+)\s*\{([^{}]*)\}", rest)}
+
+
+def latest_compare_lines(case="."):
+    """A case's latest compareFVM output: compare.dat's path, its top-level entries and lines (read_compare),
+    and the profiles.dat beside it; exits when it compares no line."""
+    path = latest(os.path.normpath(os.path.join(case, "postProcessing", "compareFVM", "*", "compare.dat")))
+    top, lines = read_compare(path)
+    if not lines:
+        sys.exit("plotResults: compare.dat has no line (system/makeFoamCaseDict: lines)")
+    return path, top, lines, read_table(os.path.join(os.path.dirname(path), "profiles.dat"))
 
 
 def latest_compare(case="."):
@@ -230,6 +259,27 @@ def run_finished(text):
     """(steps, seconds, particle-steps per second) of the solver's 'Run finished' line; NaN without it."""
     m = re.search(r"Run finished: (\d+) steps in ([0-9.eE+-]+) s, ([0-9.eE+-]+) particle-steps/s", text)
     return (int(m.group(1)), float(m.group(2)), float(m.group(3))) if m else (float("nan"),) * 3
+
+
+def finished_solver_log(path="log.dpdFoamLike", wall="geometry"):
+    """A finished solver log: the report times and kT series (arrays; the times of the last len(kT)
+    reports), the particles inside the walls at the end, those the wall `wall` found crossed, summed over
+    the run, and run_finished; exits without a report or the run's end."""
+    text = read_text(path)
+    times, kts = log_values(text, r"^Time = ([-0-9.eE+]+)", flags=re.M), log_values(text, r"kT = ([-0-9.eE+]+)")
+    inside = log_values(text, r"inside walls now (\d+)", int)
+    crossed = log_values(text, rf"{wall} returned \d+ crossed (\d+);", int)
+    if not kts or not inside or "Run finished" not in text:
+        sys.exit(f"plotResults: {path} has no report or no end")
+    return np.array(times[-len(kts):]), np.array(kts), inside[-1], sum(crossed), run_finished(text)
+
+
+def built_particles(path="log.randomEquilWall"):
+    """The fluid and frozen particles a builder made (its log's Fluid and Frozen particles lines); exits without them."""
+    counts = [log_count(path, f"{what} particles") for what in ("Fluid", "Frozen")]
+    if not all(isinstance(n, int) for n in counts):
+        sys.exit(f"plotResults: {path} gives no particle counts")
+    return counts
 
 
 def log_count(path, label):

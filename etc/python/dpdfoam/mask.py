@@ -1,6 +1,7 @@
 """Regions of an image mask (a geometry { type imageMask; } of constant/dpdProperties): its solid at the
 centres of a case's bins, the distance to the solid and the local pore size of the fluid, and the open
-band of rows fluid across the whole width (a crack along x), in pixels and in the box's units."""
+band of rows fluid across the whole width (a crack along x), in pixels and in the box's units, and
+whether a line runs along such a band."""
 import numpy as np
 
 from .io import dictionary_value, vector
@@ -30,6 +31,14 @@ def on_grid(solid, lo, hi, xs, zs):
     column = np.clip(np.floor((xs - lo[0]) / (hi[0] - lo[0]) * solid.shape[1]).astype(int), 0, solid.shape[1] - 1)
     row = np.clip(np.floor((zs - lo[1]) / (hi[1] - lo[1]) * solid.shape[0]).astype(int), 0, solid.shape[0] - 1)
     return solid[np.ix_(row, column)]
+
+
+def case_regions_on_grid(xs, zs, case="."):
+    """The case's mask (case_mask) at a grid's points (on_grid): its path, the distance to the solid
+    (distance_to_solid) and the local pore size (local_pore_size) there."""
+    solid, path, lo, hi = case_mask(case)
+    dist = distance_to_solid(on_grid(solid, lo, hi, xs, zs))
+    return path, dist, local_pore_size(dist)
 
 
 def distance_to_solid(solid):
@@ -98,3 +107,10 @@ def crack_in_box(solid, lo, hi):
     band_z = lo[1] + first * pixel[1], lo[1] + (last + 1) * pixel[1]
     sections = [lo[0] + (middle_of_first_run(widths == w) + 0.5) * pixel[0] for w in (widths.min(), widths.max())]
     return band_z, widths, sections
+
+
+def runs_along_band(start, end, band_z, lo, hi):
+    """Whether the line from start to end (x, y, z) runs across the box [lo, hi] in x at one height z
+    inside the band (lower z, upper z), strictly."""
+    across = min(start[0], end[0]) <= lo[0] and max(start[0], end[0]) >= hi[0]
+    return start[2] == end[2] and band_z[0] < start[2] < band_z[1] and across

@@ -76,6 +76,37 @@ def draw_compare_lines(ax, profiles, lines, nu):
                 label=f"simpleFoam, nu = {nu:.4f}")
 
 
+def draw_twin_fields(fig, axes, speed_dpd, speed_fvm, difference, extent, title):
+    """DPD |u| and simpleFoam |u| on the bins, one colour scale (0 to the continuum's peak), and the
+    difference of their ux (titled title) over its 99th percentile, on three of axes."""
+    vmax = np.nanmax(speed_fvm)
+    draw_field(fig, axes[0], speed_dpd, extent, "DPD |u|", "|u|", vmin=0, vmax=vmax)
+    draw_field(fig, axes[1], speed_fvm, extent, "simpleFoam |u| (on the DPD bins)", "|u|", vmin=0, vmax=vmax)
+    lim = np.nanpercentile(np.abs(difference), 99)
+    draw_field(fig, axes[2], difference, extent, title, "ux DPD - ux simpleFoam", title_size=10, cmap="RdBu_r",
+               vmin=-lim, vmax=lim)
+
+
+def draw_sections_twin(ax, sections, xs, zs, ufx, fluid_count=10):
+    """profileBins' sections (io.read_sections) across the flow, DPD ux with its errors over the bins with at
+    least fluid_count samples, and the continuum's ux (on the bins: rows zs, columns xs) in the column nearest each."""
+    for x, s in sections:
+        col = int(np.argmin(np.abs(xs - x)))
+        ok = s["count"] >= fluid_count
+        line = ax.errorbar(s["z"][ok], s["ux"][ok], yerr=s["uxErr"][ok], fmt="o", ms=2, label=f"DPD x = {x:g}")
+        ax.plot(zs, ufx[:, col], "-", color=line[0].get_color(), lw=1, label=f"simpleFoam x = {x:g}")
+
+
+def draw_kT_series(ax, kT):
+    """A flow's kT (fields.FlowTemperature): the log's series (about the local flow) against 1 + the flow's
+    part (what a global mean would read) and the bins' kT, the set kT and the start of the sampling."""
+    ax.plot(kT.times, kT.series, "o-", ms=3, label="log: kT about the local flow")
+    ax.axhline(1 + kT.flow, color="gray", ls=":", label=f"1 + flow part {kT.flow:.4f} (a global mean)")
+    ax.axhline(kT.bins, color="r", ls="--", label=f"bins (about local flow): {kT.bins:.4f}")
+    ax.axhline(1, color="k", lw=0.8)
+    ax.axvline(kT.start, color="k", ls=":", lw=0.8)
+
+
 def stat_bars(ax, x, stats, fmt, **style):
     """BlockMeans (stats.BlockMean: .value, .error) against x, their standard errors as error bars."""
     ax.errorbar(x, [s.value for s in stats], yerr=[s.error for s in stats], fmt=fmt, **style)

@@ -10,23 +10,10 @@ flowField (system/controlDict) to the crack's narrowest and widest columns; the 
 *.orig (Allclean puts them back). The tutorial's own masks leave the case as it is. A mask without such a
 band leaves it too, and says so: plotResults.py then compares the lines the case names.
 """
-import subprocess
 import sys
 
-from dpdfoam.io import dictionary_value, set_dictionary_value, vector
-from dpdfoam.mask import case_mask, crack_in_box
-
-LINE = "lines/crack"
-
-
-def line_fits(band_z, lo, hi):
-    """Whether the case's crack line runs across the box (x) at a height inside the crack band."""
-    try:
-        start, end = (vector(dictionary_value("system/makeFoamCaseDict", f"{LINE}/{k}")) for k in ("start", "end"))
-    except subprocess.CalledProcessError:  # no line `crack`
-        return False
-    across = min(start[0], end[0]) <= lo[0] and max(start[0], end[0]) >= hi[0]
-    return start[2] == end[2] and band_z[0] < start[2] < band_z[1] and across
+from dpdfoam.io import case_line, set_case_line, set_dictionary_value, vector_text
+from dpdfoam.mask import case_mask, crack_in_box, runs_along_band
 
 
 def main():
@@ -37,14 +24,13 @@ def main():
         return 0
     band_z, widths, sections = crack
     print(f"crackFromMask: {mask}: crack band z {band_z[0]:g} to {band_z[1]:g}, width {widths.min()}-{widths.max()} pixels")
-    if line_fits(band_z, lo, hi):
+    line = case_line("crack")  # the line makeFoamCase samples and compareFVM compares
+    if line is not None and runs_along_band(*line, band_z, lo, hi):
         print("crackFromMask: the case's crack line runs along it: the case is kept as it is")
         return 0
     z = 0.5 * (band_z[0] + band_z[1])
-    set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/start", f"({lo[0]:g} 0 {z:g})")
-    set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/end", f"({hi[0]:g} 0 {z:g})")
-    set_dictionary_value("system/makeFoamCaseDict", f"{LINE}/nPoints", f"{int(round(4 * (hi[0] - lo[0]))) + 1}")
-    set_dictionary_value("system/controlDict", "functions/flowField/sections", "(" + " ".join(f"{x:g}" for x in sections) + ")")
+    set_case_line("crack", (lo[0], 0, z), (hi[0], 0, z), int(round(4 * (hi[0] - lo[0]))) + 1)
+    set_dictionary_value("system/controlDict", "functions/flowField/sections", vector_text(sections))
     print(f"crackFromMask: the crack line set at z = {z:g} from x = {lo[0]:g} to {hi[0]:g}; sections at the narrowest "
           f"and widest columns, x = {sections[0]:g} and {sections[1]:g}")
     return 0

@@ -32,19 +32,17 @@ the fluid that covers it, from the mask) and its distance to the solid; results.
 L2 and the mean-velocity ratio per class of each.
 """
 import os
-import re
 import sys
 
 import numpy as np
 
 from dpdfoam.checks import Checks, write_results
-from dpdfoam.fields import bin_temperatures, extent, foam_on_bins, read_grid, relative_l2
-from dpdfoam.io import (dictionary_value, latest, log_count, log_values, read_compare, read_dict, read_sections,
-                        read_table, read_text, run_finished)
-from dpdfoam.mask import case_mask, distance_to_solid, local_pore_size, on_grid
-from dpdfoam.plots import draw_compare_lines, draw_field, label, plt, save
+from dpdfoam.fields import CLASS_COLUMNS, FlowTemperature, TwinBins, class_lines, compare_summary, extent, read_grid
+from dpdfoam.io import (built_particles, finished_solver_log, function_start, latest, latest_compare_lines, read_dict,
+                        read_sections)
+from dpdfoam.mask import case_regions_on_grid
+from dpdfoam.plots import draw_compare_lines, draw_field, draw_kT_series, draw_sections_twin, draw_twin_fields, label, plt, save
 from dpdfoam.published import read_published
-from dpdfoam.stats import mean_and_error
 
 test_mode = "-test" in sys.argv[1:]
 
@@ -53,67 +51,23 @@ test_mode = "-test" in sys.argv[1:]
 # 0.0005-0.0006, near-grain velocity 0.013 % of the peak; budgets about twice that. Test (160 time
 # units on the 40 x 40 mask; measured at 40 time units: noiseL2 0.233, superficial 2.7 %, kT 0.0047,
 # near-grain velocity 0.63 % of the peak; four times the sampling halves each): budgets 1.3 x the
-# expected. Velocity next to the grains: standard error of
-# the mean over the near-grain bins, relative to the crack's peak.
-NOISE_BUDGETS = {
-    False: {"line": 0.05, "mean": 0.003, "kT": 0.0012, "wall": 0.0003},
-    True: {"line": 0.15, "mean": 0.018, "kT": 0.003, "wall": 0.004},
-}
+# expected. Velocity next to the grains: standard error of the mean over the near-grain bins, relative
+# to the crack's peak.
+NOISE_BUDGETS = {False: {"line": 0.05, "mean": 0.003, "kT": 0.0012, "wall": 0.0003},
+                 True: {"line": 0.15, "mean": 0.018, "kT": 0.003, "wall": 0.004}}
 BUDGET = NOISE_BUDGETS[test_mode]
 WIDEN = 3.0 if test_mode else 0.0  # test bounds: the full bound plus three test budgets, fixed
-CLASS_COLUMNS = "lo hi bins L2 noiseL2 meanRatio uFVMmean densityWholeBins"
 
 
-def solver_log():
-    """The report times and kT series, the particles inside the solid at the end, those the bounce layer
-    found crossed over the run, and the run's (steps, seconds, rate)."""
-    text = read_text("log.dpdFoamLike")
-    times, kts = log_values(text, r"^Time = ([-0-9.eE+]+)", flags=re.M), log_values(text, r"kT = ([-0-9.eE+]+)")
-    inside = log_values(text, r"inside walls now (\d+)", int)
-    crossed = log_values(text, r"geometry returned \d+ crossed (\d+);", int)
-    if not kts or not inside or "Run finished" not in text:
-        sys.exit("plotResults: log.dpdFoamLike has no report or no end")
-    return np.array(times[-len(kts):]), np.array(kts), inside[-1], sum(crossed), run_finished(text)
-
-
-def built_counts():
-    """The fluid and frozen particles randomEquilWall built (its log)."""
-    counts = [log_count("log.randomEquilWall", f"{what} particles") for what in ("Fluid", "Frozen")]
-    if not all(isinstance(n, int) for n in counts):
-        sys.exit("plotResults: log.randomEquilWall gives no particle counts")
-    return counts
-
-
-def next_to_grains(grid, ufx, near, prof, lines):
+def next_to_grains(bins, near, prof, lines):
     """Over the bins near the grains: the mean DPD and simpleFoam velocities, the DPD mean's standard
     error, and the velocity scale, the continuum's peak along the lines (the crack's), with its line."""
     peaks = {name: np.nanmax(prof["u_" + name]) for name in lines}
     line = max(peaks, key=peaks.get)
-    se = np.sqrt(np.mean(grid["uxErr"][near] ** 2) / near.sum())
-    return dict(dpd=grid["ux"][near].mean(), fvm=ufx[near].mean(), se=se, peak=peaks[line], line=line, bins=near.sum())
+    return dict(bins.region_means(near), peak=peaks[line], line=line)
 
 
-def class_table(key, edges, ud, uf, err, rho, whole):
-    """Per class of key: bins, L2, noise L2, flow ratio DPD/FVM, mean FVM velocity, and the mean DPD
-    density of the class's bins that lie wholly in the fluid (whole; nan where none do): a throat the
-    walls' repulsion reaches across is depleted, which the continuum does not know."""
-    rows = []
-    for lo, hi in zip(edges[:-1], edges[1:]):
-        sel = (key >= lo) & (key < hi) & np.isfinite(uf) & np.isfinite(ud)
-        if sel.sum() < 3:
-            continue
-        l2, noise = relative_l2(ud[sel], uf[sel], err[sel])
-        dense = sel & whole
-        density = rho[dense].mean() if dense.any() else float("nan")
-        rows.append((lo, hi, int(sel.sum()), l2, noise, ud[sel].sum() / uf[sel].sum(), uf[sel].mean(), density))
-    return rows
-
-
-def class_lines(name, rows):
-    return [f"{name} {r[0]:g} {r[1]:g} {r[2]} {r[3]:.4f} {r[4]:.4f} {r[5]:.4f} {r[6]:.5f} {r[7]:.3f}" for r in rows]
-
-
-def make_checks(cmp, lines, kT_bins, kT_log, kT_log_err, inside, wall):
+def make_checks(cmp, lines, kT, inside, wall):
     """The checks: each quantity's noise within its budget, then its fixed bound (module docstring)."""
     line_tol = 0.10 + WIDEN * BUDGET["line"]
     mean_tol = 0.10 + WIDEN * BUDGET["mean"]
@@ -129,13 +83,13 @@ def make_checks(cmp, lines, kT_bins, kT_log, kT_log_err, inside, wall):
         wall_bound = max(wall_bound, abs(u_fvm) + 0.03 * u_peak) + WIDEN * BUDGET["wall"] * u_peak
     super_err = cmp["superficialVelocityDPDErr"] / cmp["superficialVelocityFVM"]
     noise = {**{f"line {name}" if len(lines) > 1 else "line": line["noiseL2"] for name, line in lines.items()},
-             "mean": super_err, "kT": kT_log_err, "wall": wall["se"] / u_peak}
+             "mean": super_err, "kT": kT.error, "wall": wall["se"] / u_peak}
     checks = Checks()
     for name, value in noise.items():
         limit = BUDGET[name.split()[0]]
         checks.add(f"noise of the {name} within its budget {limit:g}", value <= limit, f"{value:.4g}")
-    checks.add(f"mean kT of the bins within {kT_tol:.3f} of 1", abs(kT_bins - 1) < kT_tol, f"{kT_bins:.4f}")
-    checks.add(f"mean kT of the log's series within {kT_tol:.3f} of 1", abs(kT_log - 1) < kT_tol, f"{kT_log:.4f} +- {kT_log_err:.4f}")
+    checks.add(f"mean kT of the bins within {kT_tol:.3f} of 1", abs(kT.bins - 1) < kT_tol, f"{kT.bins:.4f}")
+    checks.add(f"mean kT of the log's series within {kT_tol:.3f} of 1", abs(kT.mean - 1) < kT_tol, f"{kT.mean:.4f} +- {kT.error:.4f}")
     checks.add("no fluid particle inside the solid at the end", inside == 0, f"{inside}")
     checks.add(f"velocity next to the grains < {wall_bound / u_peak:.1%} of the {wall['line']}'s peak", abs(u_dpd) < wall_bound,
                f"{u_dpd:.4f} (peak {u_peak:.4f})")
@@ -155,55 +109,38 @@ def make_checks(cmp, lines, kT_bins, kT_log, kT_log_err, inside, wall):
 def main():
     table = latest("postProcessing/profileBins/*/flowField.dat")
     xs, zs, grid = read_grid(table)
-    times, kts, inside, crossed, (steps, seconds, rate) = solver_log()
-    cmp_path = latest("postProcessing/compareFVM/*/compare.dat")
-    cmp, lines = read_compare(cmp_path)
-    if not lines:
-        sys.exit("plotResults: compare.dat has no line (system/makeFoamCaseDict: lines)")
-    prof = read_table(os.path.join(os.path.dirname(cmp_path), "profiles.dat"))
+    times, kts, inside, crossed, (steps, seconds, rate) = finished_solver_log()
+    cmp_path, cmp, lines, prof = latest_compare_lines()
     twin = read_dict("simpleFoam/constant/dpdCase")   # nu and where it came from
-    sample_start = float(dictionary_value("system/controlDict", "functions/flowField/startTime"))
+    sample_start = function_start(".", "flowField")
 
     # Temperature: the bins' kT (about each bin's own flow) and the log's series (about the local flow,
-    # system/Monitors); flow_kT is what a global mean would have added, for reference.
-    count = grid["count"]
-    fluid = count >= 10
-    kT_bins, flow_kT = bin_temperatures(grid, fluid)
+    # system/Monitors); the flow's part (kT.flow) is what a global mean would have added, for reference.
     # Standard error of the series' mean: reports lie 10 time units or more apart, far beyond the
-    # kinetic temperature's correlation time (~1), so they count as independent.
-    kT_log, kT_log_err = mean_and_error(kts[times >= sample_start])
+    # kinetic temperature's correlation time (~1), so they count as independent. Its largest deviation
+    # from the set kT over the whole run is a quantity the paper reports.
+    fluid = grid["count"] >= 10
+    kT = FlowTemperature(grid, fluid, times, kts, sample_start)
 
-    # The two fields on the bins.
-    ufx, ufz, fvm_cells = foam_on_bins("simpleFoam", xs, zs)
-    fvm_fraction = fvm_cells / fvm_cells.max()
-    # Maps show the bins holding at least a quarter of a full bin's particles: in bins the grains'
-    # surface cuts, the few particles in the sliver of fluid carry a large, biased mean (README).
-    shown = count >= 0.25 * np.median(count[count > 0])
-    speed_dpd = np.where(shown, np.hypot(grid["ux"], grid["uz"]), np.nan)
+    # The two fields on the bins. Maps show the bins holding at least a quarter of a full bin's
+    # particles: in bins the grains' surface cuts, the few particles in the sliver of fluid carry a large,
+    # biased mean (README).
+    bins = TwinBins(xs, zs, grid, fluid)
     # The mask at the bins' centres (the tutorial's: one pixel a bin).
-    mask, mask_path, box_lo, box_hi = case_mask()
-    dist = distance_to_solid(on_grid(mask, box_lo, box_hi, xs, zs))
-    pore = local_pore_size(dist)
-    compared = fluid & np.isfinite(ufx)
-    ud, uf, ue = grid["ux"][compared], ufx[compared], grid["uxErr"][compared]
+    mask_path, dist, pore = case_regions_on_grid(xs, zs)
     # The field away from the surface: bins whose every continuum cell is fluid.
-    interior = compared & (fvm_fraction == 1)
-    l2_interior, noise_interior = relative_l2(grid["ux"][interior], ufx[interior], grid["uxErr"][interior])
+    l2_interior, noise_interior = bins.interior_l2()
     # Next to the grains: bins the grains' surface passes through (the bin is solid in part: both
     # sides have cells there), i.e. fluid bins adjacent to a solid bin of the mask.
-    wall = next_to_grains(grid, ufx, compared & (dist < 0.75), prof, lines)
+    wall = next_to_grains(bins, bins.compared & (dist < 0.75), prof, lines)
 
     # Where they disagree: by local pore size and by distance to the solid.
-    rho_c, whole_c = grid["density"][compared], (fvm_fraction == 1)[compared]
-    by_pore = class_table(pore[compared], [0, 3, 5, 8, 12, 1e9], ud, uf, ue, rho_c, whole_c)
-    by_dist = class_table(dist[compared], [0, 0.75, 1.5, 3, 1e9], ud, uf, ue, rho_c, whole_c)
+    by_pore = bins.class_table(pore, [0, 3, 5, 8, 12, 1e9])
+    by_dist = bins.class_table(dist, [0, 0.75, 1.5, 3, 1e9])
     worst = max(by_pore, key=lambda r: r[3])
-    checks = make_checks(cmp, lines, kT_bins, kT_log, kT_log_err, inside, wall)
+    checks = make_checks(cmp, lines, kT, inside, wall)
 
-    # The system's kT over the whole run (the log's series about the local flow): its largest
-    # deviation from the set kT, a quantity the paper reports.
-    worst_kT = int(np.argmax(np.abs(kts - 1.0)))
-    fluid_built, frozen_built = built_counts()
+    fluid_built, frozen_built = built_particles()
     paper = read_published("published.dat")["tables"].get("counts") if os.path.exists("published.dat") else None
     write_results("results.dat", [
         f"# Porous medium (docs/scenes.md scene 6){' - TEST MODE' if test_mode else ''}: {table}, {cmp_path}",
@@ -216,65 +153,42 @@ def main():
            f" ({paper['frozen'][0] / (paper['fluid'][0] + paper['frozen'][0]):.1%})" if paper else ""),
         f"nu                 {twin['nu']:.5f}  ({twin['nuSource']})",
         f"runTime            {seconds:.0f} s for {steps} steps; {rate:.4g} particle-steps/s",
-        "kTSeries           (" + " ".join(f"{t:g}:{k:.4f}" for t, k in zip(times, kts)) + ")",
-        f"kTLog              {kT_log:.5f} +- {kT_log_err:.5f}  (mean of the series from t = {sample_start:g})",
-        f"kTFlowPart         {flow_kT:.5f}  (flow's kinetic energy per degree of freedom, from the bins: what a global mean would add)",
-        f"kTBins             {kT_bins:.5f}",
-        f"kTMaxDeviation     {kts[worst_kT] - 1:+.5f}  (largest of the log's {len(kts)} reports over the run, at t = {times[worst_kT]:g})",
+        *kT.lines(),
         f"insideAtEnd        {inside}\ncrossedBounceLayer {crossed}  (whole run)",
         f"uNextToGrains      DPD {wall['dpd']:.5f}  simpleFoam {wall['fvm']:.5f}  {wall['line']} peak {wall['peak']:.4f}",
         f"L2field            {cmp['L2']:.5f}  (noise {cmp['noiseL2']:.5f}; Linf {cmp['Linf']:.4f})",
-        f"L2interior         {l2_interior:.5f}  (noise {noise_interior:.5f}; {interior.sum()} bins whose continuum cells are all fluid)"]
-        + [f"{'L2' + name:<18} {line['L2']:.5f}  (noise {line['noiseL2']:.5f}; Linf {line['Linf']:.4f}; mean ratio "
-           f"{line['meanVelocityRatio']:.4f})" for name, line in lines.items()] + [
-        f"meanVelocityRatio  {cmp['meanVelocityRatio']:.5f}  (DPD {cmp['meanVelocityDPD']:.5f}, simpleFoam {cmp['meanVelocityFVM']:.5f})",
-        f"superficialVelocity DPD {cmp['superficialVelocityDPD']:.6f} +- {cmp['superficialVelocityDPDErr']:.6f}  "
-        f"simpleFoam {cmp['superficialVelocityFVM']:.6f}",
-        f"permeabilityDPD    {cmp['permeabilityDPD']:.5f} +- {cmp['permeabilityDPDErr']:.5f}",
-        f"permeabilityFVM    {cmp['permeabilityFVM']:.5f}\npermeabilityRatio  {cmp['permeabilityRatio']:.5f}",
-        f"# by local pore size (diameter of the largest fluid disc covering the bin): {CLASS_COLUMNS}"]
+        f"L2interior         {l2_interior:.5f}  (noise {noise_interior:.5f}; {bins.interior.sum()} bins whose continuum cells are all fluid)"]
+        + compare_summary(cmp, lines)
+        + [f"# by local pore size (diameter of the largest fluid disc covering the bin): {CLASS_COLUMNS}"]
         + class_lines("poreSize ", by_pore)
         + [f"# by distance from the bin centre to the solid: {CLASS_COLUMNS}"]
         + class_lines("wallDistance", by_dist)
         + [f"worstPoreClass     {worst[0]:g}-{worst[1]:g}: L2 {worst[3]:.4f}, mean ratio {worst[5]:.4f}"], checks)
 
-    ext = extent(xs, zs)
-    plot_fields(grid, speed_dpd, ufx, xs, zs, times, kts, flow_kT, kT_bins, sample_start, inside, ext, os.path.dirname(table))
-    plot_comparison(grid, speed_dpd, np.hypot(ufx, ufz), ufx, compared & shown, cmp, lines, prof, twin, l2_interior, ext)
+    plot_fields(bins, kT, inside, os.path.dirname(table))
+    plot_comparison(bins, cmp, lines, prof, twin, l2_interior)
     print("Written porousMedium.png, compareFVM.png and results.dat")
     return checks.status()
 
 
-def plot_fields(grid, speed_dpd, ufx, xs, zs, times, kts, flow_kT, kT_bins, sample_start, inside, ext, directory):
+def plot_fields(bins, kT, inside, directory):
     fig, ax = plt.subplots(2, 2, figsize=(13, 11))
-    draw_field(fig, ax[0, 0], speed_dpd, ext, "DPD |u| (flowField.vti)", "|u|")
+    grid, ext = bins.grid, extent(bins.xs, bins.zs)
+    draw_field(fig, ax[0, 0], bins.dpd_speed(), ext, "DPD |u| (flowField.vti)", "|u|")
     draw_field(fig, ax[0, 1], np.where(grid["count"] > 0, grid["density"], np.nan), ext, "DPD density", "number density",
                cmap="magma")
-    ax[1, 0].plot(times, kts, "o-", ms=3, label="log: kT about the local flow")
-    ax[1, 0].axhline(1 + flow_kT, color="gray", ls=":", label=f"1 + flow part {flow_kT:.4f} (a global mean)")
-    ax[1, 0].axhline(kT_bins, color="r", ls="--", label=f"bins (about local flow): {kT_bins:.4f}")
-    ax[1, 0].axhline(1, color="k", lw=0.8)
-    ax[1, 0].axvline(sample_start, color="k", ls=":", lw=0.8)
+    draw_kT_series(ax[1, 0], kT)
     label(ax[1, 0], f"kT series; {inside} particles inside the solid at the end", "time", "kT", legend=8)
     # The sections of system/controlDict (the tutorial's: the crack at its narrowest and widest).
-    for x, s in read_sections(directory, "flowField"):
-        col = int(np.argmin(np.abs(xs - x)))
-        ok = s["count"] >= 10
-        line = ax[1, 1].errorbar(s["z"][ok], s["ux"][ok], yerr=s["uxErr"][ok], fmt="o", ms=2, label=f"DPD x = {x:g}")
-        ax[1, 1].plot(zs, ufx[:, col], "-", color=line[0].get_color(), lw=1, label=f"simpleFoam x = {x:g}")
+    draw_sections_twin(ax[1, 1], read_sections(directory, "flowField"), bins.xs, bins.zs, bins.ufx)
     label(ax[1, 1], "across the flow at the sections of system/controlDict", "z", "ux", legend=8)
     save(fig, "porousMedium.png")
 
 
-def plot_comparison(grid, speed_dpd, speed_fvm, ufx, shown, cmp, lines, prof, twin, l2_interior, ext):
+def plot_comparison(bins, cmp, lines, prof, twin, l2_interior):
     fig, ax = plt.subplots(2, 2, figsize=(13, 11))
-    vmax = np.nanmax(speed_fvm)
-    draw_field(fig, ax[0, 0], speed_dpd, ext, "DPD |u|", "|u|", vmin=0, vmax=vmax)
-    draw_field(fig, ax[0, 1], speed_fvm, ext, "simpleFoam |u| (on the DPD bins)", "|u|", vmin=0, vmax=vmax)
-    diff = np.where(shown, grid["ux"] - ufx, np.nan)
-    lim = np.nanpercentile(np.abs(diff), 99)
-    draw_field(fig, ax[1, 0], diff, ext, f"difference: L2 field {cmp['L2']:.3f}, interior {l2_interior:.3f}",
-               "ux DPD - ux simpleFoam", title_size=10, cmap="RdBu_r", vmin=-lim, vmax=lim)
+    draw_twin_fields(fig, [ax[0, 0], ax[0, 1], ax[1, 0]], bins.dpd_speed(), bins.twin_speed(), bins.difference(), extent(bins.xs, bins.zs),
+                     f"difference: L2 field {cmp['L2']:.3f}, interior {l2_interior:.3f}")
     draw_compare_lines(ax[1, 1], prof, lines, twin["nu"])  # each line of system/makeFoamCaseDict
     label(ax[1, 1], "lines of system/makeFoamCaseDict: " + "; ".join(f"{n} L2 {line['L2']:.4f}" for n, line in lines.items())
           + f"; k DPD/FVM {cmp['permeabilityRatio']:.3f}", "position along the line", "ux", legend=8)
