@@ -82,14 +82,20 @@ makeCase "$r"
 if "$bin/dpdFoamLike" -case "$r" > "$r/log.dpdFoamLike" 2>&1; then
     if "$bin/profileBins" -case "$r" -latestTime > "$work/log" 2>&1; then
         [ -f "$r/postProcessing/profileBins/6/channel.dat" ] || fail "profileBins did not write channel.dat: $(cat "$work/log")"
+        finiteRows "$r/postProcessing/profileBins/6/channel.dat"  # every column, errors included
         grep -q "channel" "$work/log" || fail "profileBins printed no summary: $(cat "$work/log")"
     else
         fail "profileBins failed on a real run: $(cat "$work/log")"
     fi
     printf '%s\nmode poiseuille;\nprofile channel;\n' "$header" > "$r/system/fitSlipLengthDict"
     if "$bin/fitSlipLength" -case "$r" -latestTime > "$work/log" 2>&1; then
-        grep -q '^nu ' "$r/postProcessing/fitSlipLength/6/fit.dat" || fail "fit.dat has no nu"
-        grep -q '^slipLength ' "$r/postProcessing/fitSlipLength/6/fit.dat" || fail "fit.dat has no slipLength"
+        fit=$r/postProcessing/fitSlipLength/6/fit.dat
+        # nu, its error and both walls' slip lengths each a finite number (a NaN or an empty entry fails).
+        finiteNumber "$(sed -n 's/^nu  *\([^;]*\);/\1/p' "$fit")" "fit.dat nu"
+        finiteNumber "$(sed -n 's/^nuError  *\([^;]*\);/\1/p' "$fit")" "fit.dat nuError"
+        for k in 1 2; do
+            finiteNumber "$(sed -n 's/^slipLength  *(\([^;]*\));/\1/p' "$fit" | awk -v k=$k '{ print $k }')" "fit.dat slipLength $k"
+        done
     else
         fail "fitSlipLength failed on a real run: $(cat "$work/log")"
     fi

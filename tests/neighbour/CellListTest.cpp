@@ -375,7 +375,10 @@ void checkMixedSpecies(bool extraNonInteracting) {
         if (::testing::Test::HasFatalFailure()) break;
         q.clearForces();
         accumulatePairForces(q, ctx, eval, 1.0);
-        // Tolerance as in checkCaseOnThreads.
+        // Tolerance as in checkCaseOnThreads, and capped likewise: it comes from the evaluator under
+        // test (measured at most 0.0039 over both cases and thread counts).
+        const double widest = *std::max_element(tolerance.begin(), tolerance.end());
+        ASSERT_LT(widest, 0.02) << "the widest particle's budget";
         for (std::size_t i = 0; i < q.size(); ++i) {
             EXPECT_NEAR(q.fx[i], f[i].x(), tolerance[i]) << "particle id " << q.id[i];
             EXPECT_NEAR(q.fy[i], f[i].y(), tolerance[i]) << "particle id " << q.id[i];
