@@ -6,8 +6,9 @@
 # the fluid at rest; its calibration's fall of b with gamma_L), tutorials/channel/slipGammaFw (the
 # slip's rise with falling gamma_fw, the variants' gap at the wall), tutorials/channel/slipLength (the measured slip length against
 # the asked one), tutorials/channel/poiseuille/latticeWall (walls compared pair by pair, no slip, nu
-# against the fluid without walls, and the missing verdict of too few super-blocks) and
-# tutorials/benchmarks/speedAccuracy (each scheme's errors at its smallest step, the blow-up). Each
+# against the fluid without walls, and the missing verdict of too few super-blocks),
+# tutorials/benchmarks/speedAccuracy (each scheme's errors at its smallest step, the blow-up) and the
+# contractions (kT, a flux equal at every section, nothing inside the solid). Each
 # check must fail for a NaN, an empty or a missing value, a standard error over its budget and a value
 # just outside its fixed bound (which a standard error within budget no longer widens), and pass for a
 # good value: the full-size numbers the tutorials' READMEs record, at the full-size budgets.
@@ -320,6 +321,32 @@ broken("slipLength asking 1", asked(1.0), (0.98, 0.03, 0.05), 1.0 + 0.15 + 0.001
 broken("slipLength asking 5", asked(5.0), (5.2, 0.1, 0.1), 5.0 - 0.5 - 0.001, 0.3)
 expect("slipLength asking 0: just inside the bound", True, lambda c: asked(0.0)(c, -0.149, 0.03, 0.05))
 expect("slipLength asking 0: calibration error NaN", False, lambda c: asked(0.0)(c, 0.0, 0.03, NAN))
+# contraction (tutorials/contraction, dpdfoam.contraction.flow_checks(checks, rows, mean kT, inside,
+# kT error, test mode, what)): the ramp at full size (README: fluxes 52.64-52.68 +- 0.06-0.12, kT
+# 1.0041) and its test mode (2026-11-30: 11.52-11.62 +- 0.14-0.24, kT 1.00423 +- 0.00057).
+from dpdfoam import contraction as ct
+FULL = [52.65, 52.65, 52.66, 52.64, 52.68], [0.12, 0.12, 0.06, 0.11, 0.12]
+TEST = [11.6077, 11.6204, 11.5204, 11.5888, 11.591], [0.241, 0.229, 0.135, 0.231, 0.231]
+flow = lambda fluxes, errors, kT=1.0041, kT_error=0.0002, inside=0, test=False: (
+    lambda c: ct.flow_checks(c, [(0.0, f, e) for f, e in zip(fluxes, errors)], kT, inside, kT_error, test, "fluid"))
+expect("contraction full size", True, flow(*FULL))
+expect("contraction test mode", True, flow(*TEST, kT=1.00423, kT_error=0.00057, test=True))
+for name, value in (("NaN", NAN), ("missing", None)):
+    expect(f"contraction kT {name}", False, flow(*FULL, kT=value))
+    expect(f"contraction kT error {name}", False, flow(*FULL, kT_error=value))
+expect("contraction kT error over its budget", False, flow(*FULL, kT_error=ct.KT_BUDGET + 0.0001))
+expect("contraction kT just above its bound", False, flow(*FULL, kT=1.0 + ct.KT_BOUND + 0.0005))
+expect("contraction kT just below its bound", False, flow(*FULL, kT=1.0 - ct.KT_BOUND - 0.0005))
+expect("contraction kT 2 % off (passed the old 3 % bound)", False, flow(*FULL, kT=1.02))
+expect("contraction a section's flux halved", False, flow([52.65, 26.3, 52.66, 52.64, 52.68], FULL[1]))
+expect("contraction a section's flux NaN", False, flow([52.65, NAN, 52.66, 52.64, 52.68], FULL[1]))
+expect("contraction full size: a section 1 % off", False, flow([52.65, 53.18, 52.66, 52.64, 52.68], FULL[1]))
+expect("contraction test: a section 3 % off (passed the old 25 %)", False,
+       flow([11.6, 11.95, 11.6, 11.6, 11.6], TEST[1], kT=1.004, kT_error=0.0006, test=True))
+expect("contraction test: a section's error over its budget", False,
+       flow(TEST[0], [0.241, 0.229, 0.135, 0.5, 0.231], kT=1.004, kT_error=0.0006, test=True))
+expect("contraction a particle inside the solid", False, flow(*FULL, inside=1))
+expect("contraction no flow", False, flow([-0.01] * 5, [0.001] * 5))
 print(f"{wrong} wrong")
 EOF
 )
