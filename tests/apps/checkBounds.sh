@@ -26,6 +26,7 @@ import sys
 import types
 
 from dpdfoam.checks import Checks
+from dpdfoam.slip import reference_check, same_at_rest_check, turn_check, zero_flux_check
 
 src, NAN = sys.argv[1], float("nan")
 
@@ -76,7 +77,8 @@ def broken(what, add, good, bound_value, noisy):
     expect(f"{what}: just outside the bound", False, lambda c: add(c, bound_value, *good[1:]))
 
 
-# stripedWall. against(checks, label, measured, run error, reference, key, wall error, budget), here
+# stripedWall (its plotResults.py's budgets, BOUND and linear; the checks it runs from dpdfoam.slip).
+# reference_check(checks, label, measured, run error, reference, key, wall error, budget, bound), here
 # through cmp(checks, measured, run error, reference value, calibration error, wall error, budget): the angle sweep's b_par at full size (README 2026-11-27: 1.143 +- 0.029 against 1.0486,
 # calibration 0.098, wall 0.091), budget 0.16, bound 3 x 0.16 = 0.48.
 class Reference:
@@ -92,7 +94,7 @@ class Reference:
 
 
 def compare(c, label, m, e, ref, ce, we, budget):
-    return sw.against(c, label, m, e, Reference(ref, ce), "slipParallel", we, budget)
+    return reference_check(c, label, m, e, Reference(ref, ce), "slipParallel", we, budget, bound=sw.BOUND)
 
 
 B = sw.budget("b, angle sweep", test=False, fluid="a25")
@@ -129,15 +131,15 @@ expect("stripedWall a = 0 b_par just beyond its bound", False,
 expect("stripedWall a = 0 has no budget for a study it does not run (NaN fails)", False,
        lambda c: cmp(c, 1.4795, 0.0619, 1.4795, 0.0935, 0.0832, sw.budget("the flow turns", test=False, fluid="a0")))
 Z = sw.budget("zero flux", test=False, fluid="a25")
-broken("stripedWall zero flux at theta 90", lambda c, r, e, b: sw.zero_flux(c, 90, r, e, b), (-0.008, 0.009, Z), -3 * Z - 0.001, 0.02)
+broken("stripedWall zero flux at theta 90", lambda c, r, e, b: zero_flux_check(c, 90, r, e, b, sw.BOUND), (-0.008, 0.009, Z), -3 * Z - 0.001, 0.02)
 T = sw.budget("the flow turns", test=False, fluid="a25")
-broken("stripedWall the flow turns at theta 45", sw.turns, (0.050, 0.007, T), 3 * T - 0.001, 0.011)
+broken("stripedWall the flow turns at theta 45", lambda c, r, e, b: turn_check(c, r, e, b, sw.BOUND), (0.050, 0.007, T), 3 * T - 0.001, 0.011)
 L = sw.budget("flux linear", test=False, fluid="a25")
 lin = lambda c, q2, e2, q1, e1, b: sw.linear(c, "along the stripes", q1, e1, q2, e2, b)
 broken("stripedWall flux linear in the force", lin, (7.546, 0.088, 7.625, 0.056, L), 7.625 * (1 - 3 * L) - 0.01, 0.2)
 expect("stripedWall flux linear: flux at g zero", False, lambda c: lin(c, 7.546, 0.088, 0.0, 0.056, L))
 R = sw.budget("at rest, kT", test=False, fluid="a25")
-rest = lambda c, g, ge, n, ne, b: sw.same_at_rest(c, "kT", g, ge, n, ne, b)
+rest = lambda c, g, ge, n, ne, b: same_at_rest_check(c, "kT", g, ge, n, ne, b, sw.BOUND)
 broken("stripedWall kT at rest", rest, (1.0008, 0.0015, 1.0019, 0.0015, R), 1.0019 + 3 * R + 0.001, 0.003)
 
 # slipGammaFw. monotonic_checks(checks, label, gammas, b, errors, step budget, rise budget): the

@@ -26,8 +26,9 @@ Modules:
     channel_blocks  a Poiseuille channel case over fitSlipLength's super-blocks: flux, centre velocity,
                 bulk kT and its heat, nu, asymmetry, densities at the walls, the run's log
     grid        a 2-D profile table averaged along one axis, its region means, a column as an image
-    slip        tunable-slip and striped walls: gamma_L for a slip length, slipTensor's runs, stripedSlip's
-                reference with its calibration error, a stripeGrid's layers over the stripes' sectors
+    slip        tunable-slip and striped walls: gamma_L for a slip length, calibrateWall's runs, slipTensor's
+                runs, stripedSlip's reference with its calibration error and the checks against it, a
+                stripeGrid's layers over the stripes' sectors
     fields      an x-z grid of bins as arrays, a continuum twin's cells on it, relative L2 (overall and per
                 class of pore size or distance to the solid), the bins' kT beside the log's series
     sweep       runSweep's sweeps of a wall parameter (variant, slip, published comparison, trend checks,

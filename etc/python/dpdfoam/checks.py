@@ -4,6 +4,7 @@ text; a check whose numbers hold a NaN or a missing value (None) fails whatever 
     checks = Checks()
     checks.add("nu within 3 %", abs(rel) < 0.03, f"{100 * rel:+.2f} %", rel)
     checks.bounded("nu within 3 % (error below 1 %)", rel, err, 0.01, -0.03, 0.03)  # issue 45's form
+    checks.within_budgets("nu within 3 budgets", rel, err, 0.01)  # the same, its bounds in budgets
     checks.write(f)                  # 'check  PASS  nu within 3 %: +0.41 %' lines
     return checks.status()           # the script's exit status: 1 when a check failed
 """
@@ -85,6 +86,16 @@ class Checks:
         shown = f"{text}; " if text else ""
         return self.add(name, ok, f"{shown}{verdict}")
 
+    def within_budgets(self, name, value, error, budget, text="", lower=-3.0, upper=3.0):
+        """bounded with its bounds in budgets: lower x budget <= value <= upper x budget (None: no bound)."""
+        return self.bounded(name, value, error, budget, None if lower is None else lower * budget,
+                            None if upper is None else upper * budget, text)
+
+    def near_zero(self, what, value, error, budget, text="", bound=3.0):
+        """what's value within bound budgets of 0, the name saying the bound and the standard error's budget."""
+        return self.within_budgets(f"{what} (within {bound:g} x {budget:g}, standard error below {budget:g})", value,
+                                   error, budget, text, -bound, bound)
+
     def fail(self, message):
         """A failed check given by its message alone."""
         self.add(message, False)
@@ -114,6 +125,17 @@ class Checks:
     def status(self):
         """The exit status: 0 when no check failed."""
         return 1 if self.failures() else 0
+
+
+def mode_budget(budgets, kind, test):
+    """A kind of check's standard-error budget of budgets {kind: (full size, test mode)}; NaN (fails) for none."""
+    value = budgets.get(kind, (None, None))[1 if test else 0]
+    return float("nan") if value is None else value
+
+
+def plus_minus(value, error, digits=4, sign=""):
+    """'value +- error' with digits decimals (sign "+": the value's sign always shown)."""
+    return f"{value:{sign}.{digits}f} +- {error:.{digits}f}"
 
 
 def relative_difference(value, error, reference, reference_error):

@@ -230,6 +230,11 @@ def read_sweep(path):
     return out
 
 
+def sweep_vector(text):
+    """A vector as runSweep's table writes it, '(a,b,c)', as an array."""
+    return np.array([float(v) for v in text.strip("()").split(",")])
+
+
 def header_means(path):
     """{name: (mean, error)} from the '# mean <name> <value> +- <error>' lines (chainStatistics)."""
     with open(path) as f:

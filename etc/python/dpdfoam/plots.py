@@ -112,6 +112,20 @@ def stat_bars(ax, x, stats, fmt, **style):
     ax.errorbar(x, [s.value for s in stats], yerr=[s.error for s in stats], fmt=fmt, **style)
 
 
+def column_bars(ax, x, table, key, fmt, **style):
+    """A table's column (runSweep's, slipTensor's) against x, its <column>Error as error bars."""
+    ax.errorbar(x, table[key], yerr=table[key + "Error"], fmt=fmt, **style)
+
+
+def legend_or_hide(axes, fontsize):
+    """A legend of that font size on each of axes that holds data; an empty one hidden."""
+    for ax in np.ravel(axes):
+        if ax.has_data():
+            ax.legend(fontsize=fontsize)
+        else:
+            ax.set_visible(False)
+
+
 def draw_chains_xz(ax, lo, hi, chains):
     """Chains (snapshots.chains_in_box) in the x-z plane, one colour each, and the box's x edges lo, hi."""
     for k, p in enumerate(chains):

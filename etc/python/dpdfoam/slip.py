@@ -1,6 +1,7 @@
 """Tunable-slip and striped walls: a slip calibration read backwards (the gamma_L for a slip length),
-slipTensor's runs with the two walls' mean slips, stripedSlip's continuum reference of a striped wall,
-and a stripeGrid's fluid layers over the stripes' sectors (docs/walls.md 3.5-3.7)."""
+calibrateWall's runs and the no-slip friction they give, slipTensor's runs with the two walls' mean slips,
+stripedSlip's continuum reference of a striped wall and the checks against it, and a stripeGrid's fluid
+layers over the stripes' sectors (docs/walls.md 3.5-3.7)."""
 import math
 import re
 import subprocess
@@ -9,7 +10,8 @@ import sys
 import numpy as np
 
 from .channel import walls_mean_slip
-from .io import latest_fit, parse_dict, read_sweep, read_text
+from .checks import as_number
+from .io import latest, latest_fit, parse_dict, read_dict, read_sweep, read_table, read_text, sweep_vector
 
 
 def calibrated_walls(path, slips):
@@ -29,6 +31,65 @@ def calibrated_walls(path, slips):
     keys = ("gammaL", "slipLengthError", "planeOffset", "slipLeft")
     walls = {b: {k: asked[k][i] for k in keys} for i, b in enumerate(inside)}
     return summary, [walls.get(b) for b in slips]
+
+
+def bracketed_frictions(path, slips):
+    """Per asked slip length the calibration's (gammaL, error of b there) where it brackets b (calibrated_walls:
+    smallestSlip <= b <= largestSlip; below, the stiffest friction leaves its own slip), else None."""
+    summary, walls = calibrated_walls(path, slips)
+    return [(w["gammaL"], w["slipLengthError"]) if w and b >= summary["smallestSlip"] else None
+            for b, w in zip(slips, walls)]
+
+
+def read_calibration_runs(directory):
+    """calibrateWall's runs in directory: hydrodynamicWall.dat's entries (lists as arrays) and the sweep's gamma_L."""
+    fit = read_dict(f"{directory}/hydrodynamicWall.dat")
+    fit = {k: np.asarray(v) if isinstance(v, list) else v for k, v in fit.items()}
+    sweep = read_sweep(f"{directory}/sweepPoiseuille/sweep.dat")
+    return fit, np.asarray(sweep["walls/lower/tunableSlip/gammaL"], dtype=float)
+
+
+def calibration_lines(gammas, fit):
+    """hydrodynamicWall's fit as lines: per gamma_L (in order) b from the hydrodynamic wall and the planes'
+    apparent slips."""
+    b, err = fit["slipLength"], fit["slipLengthError"]
+    return (["# gamma_L  b (from the hydrodynamic wall) +- err   apparent Couette / Poiseuille (from the planes)"]
+            + [f"{gammas[k]:7g}  {b[k]:+.4f} +- {err[k]:.4f}   {fit['apparentSlipCouette'][k]:+.4f} / "
+               f"{fit['apparentSlipPoiseuille'][k]:+.4f}" for k in np.argsort(gammas)]
+            + [f"# chi2 per degree of freedom of the wall's fit: {fit['chi2PerDof']:.3f} ({fit['dof']:g} dof)"])
+
+
+def slip_not_rising_checks(checks, gammas, b, err, end_budget, bound=3.0):
+    """From each gamma_L to the next stiffer one the slip length must not rise decisively: the step
+    b(softer) - b(stiffer) no lower than -bound budgets, its standard error below one (end_budget(b) of
+    both ends in quadrature). A sweep of fewer than two gamma_L fails."""
+    gammas, b, err = (np.asarray(v, dtype=float) for v in (gammas, b, err))
+    order = np.argsort(gammas)
+    if len(order) < 2:
+        checks.fail(f"the calibration sweeps at least two gamma_L ({len(order)} here)")
+    for lo, hi in zip(order[:-1], order[1:]):
+        step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
+        budget = math.hypot(end_budget(b[lo]), end_budget(b[hi]))
+        checks.bounded(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g} (standard "
+                       f"error below {budget:.3g})", step, se, budget, -bound * budget, None)
+
+
+def stiff_end(gammas, b, err):
+    """The calibration's stiffest gamma_L (its index) and its last step: b at the next softer gamma_L less b there, and
+    its standard error."""
+    order = np.argsort(gammas)
+    stiff, before = order[-1], order[-2]
+    return stiff, b[before] - b[stiff], math.hypot(err[before], err[stiff])
+
+
+def no_slip_friction(bracketed, gammas, b, err, z=3.0):
+    """The no-slip wall's (gamma_L, b, error of b): where the calibration brackets b = 0 (bracketed: its gamma_L
+    and error), that; where the friction saturates first (the last step below z standard errors), the stiffest
+    gamma_L with the slip it leaves; else None."""
+    if bracketed:
+        return bracketed[0], 0.0, bracketed[1]
+    stiff, step, se = stiff_end(gammas, b, err)
+    return (gammas[stiff], b[stiff], err[stiff]) if step < z * se else None
 
 
 def slip_choices(case="."):
@@ -61,6 +122,20 @@ def read_slip_tensor(path, offset=0.0):
     s["bEffective"], s["bEffectiveError"] = s["slipEffective"] + offset, s["slipEffectiveError"]
     s["angle"] = [round(float(a), 2) for a in s["theta"]]
     return s
+
+
+# slipTensor's two principal slip lengths: the stem of their columns (b<stem>, slip<stem>) and their name.
+PRINCIPAL_SLIPS = (("Parallel", "b_par"), ("Perpendicular", "b_perp"))
+
+
+def run_value(table, key, k):
+    """Run k's value of a sweep table's column and its <column>Error."""
+    return table[key][k], table[key + "Error"][k]
+
+
+def run_force(table, k):
+    """The size of run k's body force (a sweep table's bodyForce/value)."""
+    return math.hypot(*sweep_vector(table["bodyForce/value"][k]))
 
 
 def striped_slip(gas_fraction, slip, height, period, angles):
@@ -119,6 +194,52 @@ class StripedReference:
         return self["slipParallel"] * np.cos(rad) ** 2 + self["slipPerpendicular"] * np.sin(rad) ** 2
 
 
+def reference_check(checks, name, measured, run_error, ref, key, wall_error, budget, angle=None, bound=3.0):
+    """measured against a StripedReference's key (at angle): the comparison's standard error (the run's, the wall
+    position's and the calibration's in quadrature) below the budget, then within bound budgets."""
+    m, r, w = (as_number(v) for v in (measured, run_error, wall_error))
+    x, c = as_number(ref.at(key, angle)), as_number(ref.error(key, angle))
+    total = math.sqrt(r ** 2 + w ** 2 + c ** 2)
+    return checks.within_budgets(f"{name} within {bound:g} x {budget:g} of the reference {x:.4f} (standard error below "
+                                 f"{budget:g})", m - x, total, budget, f"{m:+.4f} +- {total:.4f} (run {r:.4f}, wall "
+                                 f"{w:.4f}, calibration {c:.4f}), difference {m - x:+.4f}", -bound, bound)
+
+
+def principal_slip_checks(checks, where, table, rows, ref, wall_error, budget, bound=3.0):
+    """b_par and b_perp of single runs of a slipTensor table (rows: the run of each) against the reference."""
+    for (key, name), k in zip(PRINCIPAL_SLIPS, rows):
+        reference_check(checks, f"{name} at {where}", *run_value(table, "b" + key, k), ref, "slip" + key, wall_error,
+                        budget, bound=bound)
+
+
+def anisotropy_check(checks, name, par, perp, ref, budget, bound=3.0):
+    """b_par - b_perp ((value, error) each) against the reference: it does not depend on where the wall acts."""
+    return reference_check(checks, name, par[0] - perp[0], math.hypot(par[1], perp[1]), ref, "anisotropy", 0.0, budget,
+                           bound=bound)
+
+
+def zero_flux_check(checks, angle, ratio, error, budget, bound=3.0):
+    """No transverse flux where nothing breaks the symmetry (theta 0 and 90): the ratio within bound budgets of 0."""
+    ratio = as_number(ratio)
+    return checks.near_zero(f"no transverse flux at theta {angle:g}", ratio, error, budget, f"{ratio:+.5f}", bound)
+
+
+def turn_check(checks, ratio, error, budget, bound=3.0):
+    """The flow turns towards the stripes at theta 45: the transverse flux ratio above bound budgets."""
+    ratio = as_number(ratio)
+    return checks.within_budgets(f"the flow turns towards the stripes at theta 45 (ratio above {bound:g} x {budget:g}, "
+                                 f"standard error below {budget:g})", ratio, error, budget, f"{ratio:+.5f}", bound,
+                                 None)
+
+
+def same_at_rest_check(checks, q, gas, gas_error, no_slip, no_slip_error, budget, bound=3.0):
+    """At rest, q within zc of the walls the same over gas and no-slip sectors: the difference within bound budgets."""
+    g, ge, n, ne = (as_number(v) for v in (gas, gas_error, no_slip, no_slip_error))
+    se = math.hypot(ge, ne)
+    return checks.near_zero(f"at rest, {q} within zc of the walls the same over gas and no-slip sectors", g - n, se,
+                            budget, f"{g:.4f} against {n:.4f}, difference {g - n:+.4f} +- {se:.4f}", bound)
+
+
 def distance_to_walls(table, walls):
     return np.minimum(table["z"] - walls[0], walls[1] - table["z"])
 
@@ -167,3 +288,14 @@ def first_layer(table, walls, period, gas_fraction, cutoff):
     (down, de), (up, ue) = [(np.sum(mass[sel]), math.sqrt(np.sum((t["densityErr"][layer][sel] * dz) ** 2)))
                             for sel in (downstream & (phase < 1.0), ~downstream & (phase < 1.0))]
     return velocity, (down / up - 1.0, math.hypot(de / up, down * ue / up ** 2)), depths[minimum] - 0.5 * dz
+
+
+def first_layers(sweep, table, angles, walls, period, gas_fraction, cutoff):
+    """first_layer of a slipTensor sweep's runs (in directory sweep) at angles, each with its force's size:
+    {angle: (layer, force)}."""
+    layers = {}
+    for a in angles:
+        k = table["angle"].index(a)
+        grid = read_table(latest(f"{sweep}/{table['case'][k]}/postProcessing/profileBins/*/stripeGrid.dat"))
+        layers[a] = (first_layer(grid, walls, period, gas_fraction, cutoff), run_force(table, k))
+    return layers

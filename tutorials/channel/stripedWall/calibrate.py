@@ -13,15 +13,12 @@ and plotResults.py read) and calibration.png; exits non-zero when either is not 
 gamma_L.
 """
 import argparse
-import math
 import sys
 
-import numpy as np
-
 from dpdfoam.checks import Checks, print_file
-from dpdfoam.io import read_dict, read_sweep
 from dpdfoam.plots import label, plt, save
-from dpdfoam.slip import calibrated_walls
+from dpdfoam.slip import (bracketed_frictions, calibration_lines, no_slip_friction, read_calibration_runs,
+                          slip_not_rising_checks, stiff_end)
 
 
 # The slip length's standard error grows with b (b = u_slip / shear rate): full size 0.10-0.15 where b is
@@ -37,18 +34,8 @@ def slip_budget(b, test):
 
 
 def rise_checks(checks, gammas, b, err, test):
-    """From each gamma_L to the next stiffer one the slip length must not rise decisively: the step
-    b(softer) - b(stiffer) no lower than -3 budgets, its standard error below one (slip_budget of both
-    ends in quadrature). A sweep of fewer than two gamma_L fails."""
-    gammas, b, err = (np.asarray(v, dtype=float) for v in (gammas, b, err))
-    order = np.argsort(gammas)
-    if len(order) < 2:
-        checks.fail(f"the calibration sweeps at least two gamma_L ({len(order)} here)")
-    for lo, hi in zip(order[:-1], order[1:]):
-        step, se = b[lo] - b[hi], math.hypot(err[lo], err[hi])
-        budget = math.hypot(slip_budget(b[lo], test), slip_budget(b[hi], test))
-        checks.bounded(f"slip length not decisively larger at gamma_L {gammas[hi]:g} than at {gammas[lo]:g} (standard "
-                       f"error below {budget:.3g})", step, se, budget, -3 * budget, None)
+    """b must not rise decisively from each gamma_L to the next stiffer one (each end's budget slip_budget)."""
+    return slip_not_rising_checks(checks, gammas, b, err, lambda slip: slip_budget(slip, test))
 
 
 def arguments():
@@ -78,51 +65,11 @@ def write_calibration(hw, period, slip_target, picks, others):
     print_file("calibration/gammaL.dat")
 
 
-def main():
-    args = arguments()
-    period, slip_target, test = args.period, args.slip, args.test
-    hw = {k: np.asarray(v) if isinstance(v, list) else v for k, v in read_dict("calibration/hydrodynamicWall.dat").items()}
-    gammas = np.asarray(read_sweep("calibration/sweepPoiseuille/sweep.dat")["walls/lower/tunableSlip/gammaL"], dtype=float)
-    b, err = hw["slipLength"], hw["slipLengthError"]
-    span = f"b from {b.min():.3f} to {b.max():.3f}"
-    checks = Checks()
-    rise_checks(checks, gammas, b, err, test)
-    order = np.argsort(gammas)
-    picks = {}
-    # Each asked slip length's friction and error as dpdFoamLike's walls would take them; bracketed
-    # where it lies within the calibrated range (below it the stiffest friction leaves its own slip).
-    summary, walls = calibrated_walls("calibration/slipCalibration", [slip_target, 0.0] + args.slips)
-    bracketed = lambda b, wall: (wall["gammaL"], wall["slipLengthError"]) if wall and b >= summary["smallestSlip"] else None
-    found = bracketed(slip_target, walls[0])
-    checks.add(f"the sweep brackets b = {slip_target:g} (gammaGas)", found is not None, span)
-    if found:
-        picks["gammaGas"] = (found[0], slip_target, found[1])
-    # The other local slip lengths the study sweeps (-slips): their gas gamma_L as lists.
-    others = [(b_other, bracketed(b_other, wall)) for b_other, wall in zip(args.slips, walls[2:])]
-    for b_other, found_other in others:
-        checks.add(f"the sweep brackets b = {b_other:g} (gammaGasOf)", found_other is not None, span)
-    # No slip: where b crosses 0, or, where the friction saturates first (the stiffest step of the sweep
-    # no longer lowers b decisively), the stiffest gamma_L with the slip it leaves, b0 (plotResults.py
-    # holds the stripes to the reference with that residual slip).
-    found = bracketed(0.0, walls[1])
-    stiff, before = order[-1], order[-2]
-    if found:
-        picks["gammaNoSlip"] = (found[0], 0.0, found[1])
-    elif b[before] - b[stiff] < 3 * math.hypot(err[before], err[stiff]):
-        picks["gammaNoSlip"] = (gammas[stiff], b[stiff], err[stiff])
-    checks.add("the sweep brackets b = 0, or b saturates at the stiff end (gammaNoSlip)", "gammaNoSlip" in picks,
-               f"{span}; last step {b[before] - b[stiff]:+.3f}")
-
-    write_calibration(hw, period, slip_target, picks, others)
-    print("# gamma_L  b (from the hydrodynamic wall) +- err   apparent Couette / Poiseuille (from the planes)")
-    for k in order:
-        print(f"{gammas[k]:7g}  {b[k]:+.4f} +- {err[k]:.4f}   {hw['apparentSlipCouette'][k]:+.4f} / "
-              f"{hw['apparentSlipPoiseuille'][k]:+.4f}")
-    print(f"# chi2 per degree of freedom of the wall's fit: {hw['chi2PerDof']:.3f} ({hw['dof']:g} dof)")
-    print("\n".join(checks.lines()))
-
+def draw(hw, gammas, picks):
+    """calibration.png: the uniform wall's b against gamma_L, each picked gamma_L starred."""
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    ax.errorbar(gammas, b, yerr=err, fmt="o-", label="uniform wall: b from the hydrodynamic wall")
+    ax.errorbar(gammas, hw["slipLength"], yerr=hw["slipLengthError"], fmt="o-",
+                label="uniform wall: b from the hydrodynamic wall")
     for name, (gamma, slip, e) in picks.items():
         ax.plot(gamma, slip, "r*", ms=12)
         ax.annotate(f"{name} {gamma:.3g} (b {slip:.2f})", (gamma, slip), textcoords="offset points", xytext=(-60, 12))
@@ -130,6 +77,39 @@ def main():
     ax.set_xscale("log")
     label(ax, f"calibration: the wall acts {hw['offset']:.3f} in front of its plane", "gamma_L", "slip length b", legend=8)
     save(fig, "calibration.png", dpi=100)
+
+
+def main():
+    args = arguments()
+    hw, gammas = read_calibration_runs("calibration")
+    b, err = hw["slipLength"], hw["slipLengthError"]
+    span = f"b from {b.min():.3f} to {b.max():.3f}"
+    checks = Checks()
+    rise_checks(checks, gammas, b, err, args.test)
+    # Each asked slip length's friction and error as dpdFoamLike's walls would take them; bracketed
+    # where it lies within the calibrated range (below it the stiffest friction leaves its own slip).
+    gas, at_zero, *other_gases = bracketed_frictions("calibration/slipCalibration", [args.slip, 0.0] + args.slips)
+    picks = {}
+    if checks.add(f"the sweep brackets b = {args.slip:g} (gammaGas)", gas is not None, span):
+        picks["gammaGas"] = (gas[0], args.slip, gas[1])
+    # The other local slip lengths the study sweeps (-slips): their gas gamma_L as lists.
+    others = list(zip(args.slips, other_gases))
+    for b_other, found_other in others:
+        checks.add(f"the sweep brackets b = {b_other:g} (gammaGasOf)", found_other is not None, span)
+    # No slip: where b crosses 0, or, where the friction saturates first (the stiffest step of the sweep
+    # no longer lowers b decisively), the stiffest gamma_L with the slip it leaves, b0 (plotResults.py
+    # holds the stripes to the reference with that residual slip).
+    last_step = stiff_end(gammas, b, err)[1]
+    no_slip = no_slip_friction(at_zero, gammas, b, err)
+    if no_slip:
+        picks["gammaNoSlip"] = no_slip
+    checks.add("the sweep brackets b = 0, or b saturates at the stiff end (gammaNoSlip)", "gammaNoSlip" in picks,
+               f"{span}; last step {last_step:+.3f}")
+
+    write_calibration(hw, args.period, args.slip, picks, others)
+    print("\n".join(calibration_lines(gammas, hw)))
+    print("\n".join(checks.lines()))
+    draw(hw, gammas, picks)
     print("Written calibration.png and calibration/gammaL.dat")
     return checks.status()
 

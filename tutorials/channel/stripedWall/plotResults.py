@@ -37,10 +37,12 @@ import sys
 
 import numpy as np
 
-from dpdfoam.checks import Checks, as_number, write_results
-from dpdfoam.io import dictionary_number, latest, read_dict, read_table, wall_planes
-from dpdfoam.plots import label, plt, save
-from dpdfoam.slip import StripedReference, first_layer, near_wall_sectors, read_slip_tensor
+from dpdfoam.checks import Checks, as_number, mode_budget, plus_minus as pm, write_results
+from dpdfoam.io import dictionary_number, latest, read_dict, read_table, sweep_vector, wall_planes
+from dpdfoam.plots import column_bars, label, legend_or_hide, plt, save
+from dpdfoam.slip import (PRINCIPAL_SLIPS, StripedReference, anisotropy_check, first_layers, near_wall_sectors,
+                          principal_slip_checks, read_slip_tensor, reference_check, run_value as run,
+                          same_at_rest_check, turn_check, zero_flux_check)
 from dpdfoam.stats import inverse_variance_mean
 
 TEST_MODE = "-test" in sys.argv[1:]
@@ -48,7 +50,7 @@ TEST_MODE = "-test" in sys.argv[1:]
 FLUID = "a25" if "-a25" in sys.argv[1:] else "a0"
 # The test's 800 time units cannot decide the turn at theta 45 (its budget's bound, 3 x 0.04, lies above
 # the reference's 0.051): information there, every other check of the test's runs decided.
-TEST_INFORMATION = ("the flow turns towards the stripes",)
+TEST_INFORMATION = ("the flow turns towards the stripes",)  # (dpdfoam.slip.turn_check's name)
 # A value within BOUND budgets of its expectation (issue 45: the bound fixed by the budget).
 BOUND = 3.0
 # Standard-error budgets (issue 45) per fluid, (full size, test mode). None: that study does not run.
@@ -104,12 +106,10 @@ BUDGETS = {
 def budget(kind, test=None, fluid=None):
     """The standard-error budget of a kind of check in this mode and fluid (or in the ones `test` and
     `fluid` name); NaN, a failed check, for a study that mode has no budget for."""
-    value = BUDGETS[fluid or FLUID].get(kind, (None, None))[1 if (TEST_MODE if test is None else test) else 0]
-    return float("nan") if value is None else value
+    return mode_budget(BUDGETS[fluid or FLUID], kind, TEST_MODE if test is None else test)
 
 
 ZC = 1.0
-PAR_PERP = (("Parallel", "b_par"), ("Perpendicular", "b_perp"))
 
 
 def reference(cal, gas_fraction, slip, slip_error, height, angles=(45.0,), period=None, label=None):
@@ -118,81 +118,16 @@ def reference(cal, gas_fraction, slip, slip_error, height, angles=(45.0,), perio
                             (cal["gammaNoSlipSlip"], cal["gammaNoSlipSlipError"]), angles, label)
 
 
-def pm(value, error, digits=4, sign=""):
-    """'value +- error' as results.dat writes it."""
-    return f"{value:{sign}.{digits}f} +- {error:.{digits}f}"
-
-
-def run(s, key, k):
-    """Run k's value of a column and its error."""
-    return s[key][k], s[key + "Error"][k]
-
-
-def within(checks, name, value, error, limit, text, lower=-BOUND, upper=BOUND):
-    """A check (issue 45): the standard error below the budget `limit`, then the value within lower to
-    upper budgets (None: no bound on that side)."""
-    return checks.bounded(name, value, error, limit, lower * limit, None if upper is None else upper * limit, text)
-
-
-def near_zero(checks, what, value, error, limit, text):
-    """what's value within BOUND budgets of 0."""
-    return within(checks, f"{what} (within {BOUND:g} x {limit:g}, standard error below {limit:g})", value, error, limit,
-                  text)
-
-
-def against(checks, name, measured, run_error, ref, key, wall_error, limit, angle=None):
-    """measured against the reference's key: the comparison's standard error (the run's, the wall
-    position's and the calibration's in quadrature) below the budget `limit`, then within BOUND budgets."""
-    m, r, w = (as_number(v) for v in (measured, run_error, wall_error))
-    x, c = as_number(ref.at(key, angle)), as_number(ref.error(key, angle))
-    total = math.sqrt(r ** 2 + w ** 2 + c ** 2)
-    return within(checks, f"{name} within {BOUND:g} x {limit:g} of the reference {x:.4f} (standard error below {limit:g})",
-                  m - x, total, limit, f"{m:+.4f} +- {total:.4f} (run {r:.4f}, wall {w:.4f}, calibration {c:.4f}), "
-                  f"difference {m - x:+.4f}")
-
-
-def slip_checks(checks, where, s, rows, ref, wall_error):
-    """b_par and b_perp of single runs (rows: the run of each) against the reference."""
-    for (key, name), k in zip(PAR_PERP, rows):
-        against(checks, f"{name} at {where}", *run(s, "b" + key, k), ref, "slip" + key, wall_error, budget("b, one run"))
-
-
-def anisotropy(checks, name, par, perp, ref, limit):
-    """b_par - b_perp against the reference: it does not depend on where the wall acts."""
-    against(checks, name, par[0] - perp[0], math.hypot(par[1], perp[1]), ref, "anisotropy", 0.0, limit)
-
-
-def zero_flux(checks, angle, ratio, error, limit):
-    """No transverse flux where nothing breaks the symmetry (theta 0 and 90): within BOUND budgets of 0."""
-    ratio = as_number(ratio)
-    return near_zero(checks, f"no transverse flux at theta {angle:g}", ratio, error, limit, f"{ratio:+.5f}")
-
-
-def turns(checks, ratio, error, limit):
-    """The flow turns towards the stripes at theta 45: the ratio above BOUND budgets."""
-    ratio = as_number(ratio)
-    return within(checks, f"the flow turns towards the stripes at theta 45 (ratio above {BOUND:g} x {limit:g}, standard "
-                  f"error below {limit:g})", ratio, error, limit, f"{ratio:+.5f}", BOUND, None)
-
-
-def same_at_rest(checks, q, gas, gas_error, no_slip, no_slip_error, limit):
-    """At rest, quantity q within zc of the walls the same over gas and no-slip sectors: their difference
-    within BOUND budgets of 0."""
-    g, ge, n, ne = (as_number(v) for v in (gas, gas_error, no_slip, no_slip_error))
-    se = math.hypot(ge, ne)
-    return near_zero(checks, f"at rest, {q} within zc of the walls the same over gas and no-slip sectors", g - n, se,
-                     limit, f"{g:.4f} against {n:.4f}, difference {g - n:+.4f} +- {se:.4f}")
-
-
 def linear(checks, name, q1, e1, q2, e2, limit):
     """The flux per unit force at g / 2 (q2) as at g (q1): their relative difference within BOUND
     budgets (relative) of 0."""
     q1, e1, q2, e2 = (as_number(v) for v in (q1, e1, q2, e2))
     rel = q2 / q1 - 1.0 if q1 else float("nan")
     se = math.hypot(e1, e2) / abs(q1) if q1 else float("nan")
-    return within(checks, f"flux {name} linear in the force: per unit force at g / 2 as at g, within "
-                  f"{100 * BOUND * limit:g} % (standard error below {100 * limit:g} %)", rel, se, limit,
-                  f"{q2:.4f} against {q1:.4f}, difference {100 * rel:+.2f} +- {100 * se:.2f} %")
+    return checks.within_budgets(f"flux {name} linear in the force: per unit force at g / 2 as at g, within "
+                                 f"{100 * BOUND * limit:g} % (standard error below {100 * limit:g} %)", rel, se, limit,
+                                 f"{q2:.4f} against {q1:.4f}, difference {100 * rel:+.2f} +- {100 * se:.2f} %",
+                                 -BOUND, BOUND)
 
 
 def layer_study(sweep, s, ref, walls, period, gas_fraction, out):
@@ -201,25 +136,21 @@ def layer_study(sweep, s, ref, walls, period, gas_fraction, out):
     b_perp / b_par and piles up downstream; with the fluid behind the walls it follows the continuum."""
     if 0.0 not in s["angle"] or 90.0 not in s["angle"]:
         return
-    runs, force = {}, {}
-    for a in (0.0, 90.0):
-        k = s["angle"].index(a)
-        grid = read_table(latest(f"{sweep}/{s['case'][k]}/postProcessing/profileBins/*/stripeGrid.dat"))
-        runs[a] = first_layer(grid, walls, period, gas_fraction, ZC)
-        force[a] = math.hypot(*[float(c) for c in s["bodyForce/value"][k].strip("()").split(",")])
-    if None in runs.values():
+    layers = first_layers(sweep, s, (0.0, 90.0), walls, period, gas_fraction, ZC)
+    if any(layer is None for layer, _ in layers.values()):
         out.append(f"# L {period:g}: no first fluid layer (no density minimum within two cutoffs of the plane: nothing "
                    "packs against the wall, as in a fluid without conservative force)")
         return
+    (along_layer, along_force), (across_layer, across_force) = layers[0.0], layers[90.0]
     # Per unit force: in the continuum the mean slip velocity is b_eff times the wall's shear rate, the
     # same for both at the same force, so the ratio is b_perp / b_par.
-    along, across = runs[0.0][0]["y"] / force[0.0], runs[90.0][0]["x"] / force[90.0]
-    out.append(f"# L {period:g}, the first fluid layer (from the plane to {runs[0.0][2]:.2f}): its mean velocity per "
+    along, across = along_layer[0]["y"] / along_force, across_layer[0]["x"] / across_force
+    out.append(f"# L {period:g}, the first fluid layer (from the plane to {along_layer[2]:.2f}): its mean velocity per "
                f"unit force, along the stripes at theta 0 {along:.2f}, across them at theta 90 {across:.2f}: ratio "
                f"{across / along:.3f}, against the continuum's b_perp / b_par "
                f"{ref['slipPerpendicular'] / ref['slipParallel']:.3f}")
     out += [f"# L {period:g}, the first layer's areal density over the gas sectors, downstream half against "
-            f"upstream half, theta {a:g}: {pm(*runs[a][1], sign='+')}" for a in (0.0, 90.0)]
+            f"upstream half, theta {a:g}: {pm(*layers[a][0][1], sign='+')}" for a in (0.0, 90.0)]
 
 
 def period_study(cal, sp, height, gas_fraction, checks, out, walls):
@@ -229,10 +160,11 @@ def period_study(cal, sp, height, gas_fraction, checks, out, walls):
     out.append(f"# period L {period:g} (b/L {cal['gammaGasSlip'] / period:.3f}): b_par at theta 0, b_perp at theta 90 "
                "(reference)")
     rows = [sp["angle"].index(a) for a in (0.0, 90.0)]  # b_par from the run along the stripes, b_perp across
-    slip_checks(checks, f"L {period:g}", sp, rows, ref, cal["halfWidthError"])
-    out += [f"{name}  {pm(*run(sp, 'b' + key, k))} ({ref['slip' + key]:.4f})" for (key, name), k in zip(PAR_PERP, rows)]
-    anisotropy(checks, f"b_par - b_perp at L {period:g} (the wall's position cancels)",
-               *[run(sp, "b" + key, k) for (key, _), k in zip(PAR_PERP, rows)], ref, budget("b_par - b_perp, L 40"))
+    principal_slip_checks(checks, f"L {period:g}", sp, rows, ref, cal["halfWidthError"], budget("b, one run"), BOUND)
+    par, perp = (run(sp, "b" + key, k) for (key, _), k in zip(PRINCIPAL_SLIPS, rows))
+    out += [f"{name}  {pm(*b)} ({ref['slip' + key]:.4f})" for (key, name), b in zip(PRINCIPAL_SLIPS, (par, perp))]
+    anisotropy_check(checks, f"b_par - b_perp at L {period:g} (the wall's position cancels)", par, perp, ref,
+                     budget("b_par - b_perp, L 40"), BOUND)
     layer_study("sweepPeriod", sp, ref, walls, period, gas_fraction, out)
 
 
@@ -248,23 +180,23 @@ def angle_study(cal, s, height, gas_fraction, checks, out):
                 pm(*run(s, "fluxPerpendicular", k)), pm(*run(s, "transverseFluxRatio", k), 5, "+")]
         out.append("  ".join(row) + f"   {ref.effective(a):.4f} {ref.at('ratio', a):.5f}")
     wall_error, means = cal["halfWidthError"], {}
-    for key, name in PAR_PERP:
+    for key, name in PRINCIPAL_SLIPS:
         runs = np.isfinite(s["b" + key])
         mean, err = means[key] = inverse_variance_mean(s["b" + key][runs], s["b" + key + "Error"][runs])
-        against(checks, f"{name} (angle sweep, weighted over {int(runs.sum())} runs)", mean, err, ref, "slip" + key,
-                wall_error, budget("b, angle sweep"))
+        reference_check(checks, f"{name} (angle sweep, weighted over {int(runs.sum())} runs)", mean, err, ref,
+                        "slip" + key, wall_error, budget("b, angle sweep"), bound=BOUND)
         out.append(f"# {name}: {pm(mean, err)} (runs; wall +- {wall_error:.4f}), reference {ref['slip' + key]:.4f}")
-    anisotropy(checks, "b_par - b_perp (angle sweep; the wall's position cancels)", means["Parallel"],
-               means["Perpendicular"], ref, budget("b_par - b_perp, angle sweep"))
+    anisotropy_check(checks, "b_par - b_perp (angle sweep; the wall's position cancels)", means["Parallel"],
+                     means["Perpendicular"], ref, budget("b_par - b_perp, angle sweep"), BOUND)
     for k, a in enumerate(s["angle"]):
         ratio, err = run(s, "transverseFluxRatio", k)
         if a == 45.0:
-            turns(checks, ratio, err, budget("the flow turns"))
+            turn_check(checks, ratio, err, budget("the flow turns"), BOUND)
         if a % 90 == 0:
-            zero_flux(checks, a, ratio, err, budget("zero flux"))
+            zero_flux_check(checks, a, ratio, err, budget("zero flux"), BOUND)
         else:
-            against(checks, f"transverse flux ratio at theta {a:g}", ratio, err, ref, "ratio", 0.0,
-                    budget("flux ratio, angle sweep"), a)
+            reference_check(checks, f"transverse flux ratio at theta {a:g}", ratio, err, ref, "ratio", 0.0,
+                            budget("flux ratio, angle sweep"), a, BOUND)
     return ref
 
 
@@ -273,9 +205,9 @@ def tensor_rows(cal, s, checks, out, title, parameter, references):
     out.append(f"# {title}: {parameter}  b_par +- err (reference)  b_perp +- err (reference)  flux ratio +- err (reference)")
     for k, ref in enumerate(references):
         where = f"{parameter} {ref.label:g}"
-        slip_checks(checks, where, s, (k, k), ref, cal["halfWidthError"])
-        against(checks, f"transverse flux ratio at {where}", *run(s, "transverseFluxRatio", k), ref, "ratio", 0.0,
-                budget("flux ratio, one run"), 45.0)
+        principal_slip_checks(checks, where, s, (k, k), ref, cal["halfWidthError"], budget("b, one run"), BOUND)
+        reference_check(checks, f"transverse flux ratio at {where}", *run(s, "transverseFluxRatio", k), ref, "ratio",
+                        0.0, budget("flux ratio, one run"), 45.0, BOUND)
         out.append(f"{ref.label:8g}  {pm(*run(s, 'bParallel', k))} ({ref['slipParallel']:.4f})  "
                    f"{pm(*run(s, 'bPerpendicular', k))} ({ref['slipPerpendicular']:.4f})  "
                    f"{pm(*run(s, 'transverseFluxRatio', k), 5, '+')} ({ref.at('ratio', 45.0):.5f})")
@@ -314,7 +246,7 @@ def sweep_studies(cal, gas_fraction, height, checks, out):
         elif key == "b":
             refs = [reference(cal, gas_fraction, bo, eo, height, label=bo) for bo, eo in zip(cal["slipTargets"], cal["gammaGasSlipErrorOf"])]
         else:
-            planes = 2.0 * np.abs(np.array([float(p.strip("()").split(",")[2]) for p in s["walls/lower/point"]]))
+            planes = 2.0 * np.abs(np.array([sweep_vector(p)[2] for p in s["walls/lower/point"]]))
             refs = [reference(cal, gas_fraction, b, e, p - 2 * offset, label=p - 2 * offset) for p in planes]
         tensor_rows(cal, s, checks, out, title, key, refs)
         studies[key] = (s, refs)
@@ -348,7 +280,7 @@ def main():
     out += [f"# at rest, within zc of the walls over the {where} sectors: density {pm(*layer[where]['density'])}, "
             f"kT {pm(*layer[where]['kT'])}" for where in ("gas", "noSlip")]
     for q in ("density", "kT"):
-        same_at_rest(checks, q, *layer["gas"][q], *layer["noSlip"][q], budget(f"at rest, {q}"))
+        same_at_rest_check(checks, q, *layer["gas"][q], *layer["noSlip"][q], budget(f"at rest, {q}"), BOUND)
     # The test's short runs (800 time units) decide every check their outputs allow with the test's
     # budgets; the turn at theta 45 is information there (TEST_INFORMATION).
     checks.inform(lambda name: not TEST_MODE or not name.startswith(TEST_INFORMATION))
@@ -364,12 +296,12 @@ def draw(cal, s, ref, studies, grid, near, height, gas_fraction):
     ax = ax.ravel()
     fine = np.linspace(0, 90, 91)
     ax[0].plot(fine, ref.effective(fine), "k-", label="continuum reference")
-    ax[0].errorbar(s["theta"], s["bEffective"], yerr=s["bEffectiveError"], fmt="o", label="DPD (slipTensor)")
+    column_bars(ax[0], s["theta"], s, "bEffective", "o", label="DPD (slipTensor)")
     label(ax[0], f"effective slip: phi2 {gas_fraction:g}, b/L {cal['gammaGasSlip'] / period:g}, H/L {height / period:.2f}",
           "theta (degrees from the stripes)", "b_eff(theta)")
     curve = reference(cal, gas_fraction, cal["gammaGasSlip"], 0.0, height, range(0, 91, 5))["ratio"]
     ax[1].plot(list(curve), list(curve.values()), "k-", label="continuum reference")
-    ax[1].errorbar(s["theta"], s["transverseFluxRatio"], yerr=s["transverseFluxRatioError"], fmt="o", label="DPD")
+    column_bars(ax[1], s["theta"], s, "transverseFluxRatio", "o", label="DPD")
     ax[1].axhline(0, color="gray", ls=":")
     label(ax[1], "transverse flux, H = %.2f" % height, "theta (degrees)", "flux across the force / along it")
     for panel, key, xlabel in ((2, "phi2", "gas fraction phi2"), (3, "b", "local slip b of the gas sectors")):
@@ -377,13 +309,12 @@ def draw(cal, s, ref, studies, grid, near, height, gas_fraction):
             runs, refs = studies[key]
             x = [r.label for r in refs]
             for name, style, colour in (("Parallel", "o", "C0"), ("Perpendicular", "s", "C1")):
-                ax[panel].errorbar(x, runs["b" + name], yerr=runs["b" + name + "Error"], fmt=style, color=colour,
-                                   label=f"b_{name[:4].lower()} DPD")
+                column_bars(ax[panel], x, runs, "b" + name, style, color=colour, label=f"b_{name[:4].lower()} DPD")
                 ax[panel].plot(x, [r["slip" + name] for r in refs], "-", color=colour, label=f"b_{name[:4].lower()} reference")
             label(ax[panel], f"theta 45: against {key}", xlabel, "slip length")
     if "H" in studies:
         runs, refs = studies["H"]
-        ax[4].errorbar([r.label for r in refs], runs["transverseFluxRatio"], yerr=runs["transverseFluxRatioError"], fmt="o", label="DPD")
+        column_bars(ax[4], [r.label for r in refs], runs, "transverseFluxRatio", "o", label="DPD")
         ax[4].plot([r.label for r in refs], [r.at("ratio", 45.0) for r in refs], "k-", label="continuum reference")
         label(ax[4], "theta 45, L = b: the flux ratio against H", "H (between the hydrodynamic walls)", "transverse flux ratio")
     for q, style in (("density", "o-"), ("kT", "s-")):
@@ -391,11 +322,7 @@ def draw(cal, s, ref, studies, grid, near, height, gas_fraction):
         ax[5].plot(np.unique(grid["x"]), np.asarray(col) / np.mean(col), style, label=f"{q} / its mean")
     ax[5].axvspan(0, gas_fraction * period, color="lightblue", alpha=0.4, label="gas sector")
     label(ax[5], "at rest, within zc of the walls", "x (across the stripes)")
-    for a in ax:  # the default's studies fill three panels; -a25's every one
-        if a.has_data():
-            a.legend(fontsize=8)
-        else:
-            a.set_visible(False)
+    legend_or_hide(ax, 8)  # the default's studies fill three panels; -a25's every one
     save(fig, "stripedWall.png", dpi=100)
 
 
