@@ -118,6 +118,18 @@ void printWalls(std::ostream& log, const System& sys) {
     }
 }
 
+// "2 of 2" on one process; under MPI "2 of 2 on every rank", or the range "1-2 of 2 per rank" when the
+// ranks' budgets differ (a test reads this line to know every rank ran the threads it asked for).
+std::string threadsText(const System& sys, const ThreadUse& threads) {
+    const std::string ofAvailable = " of " + std::to_string(threads.available);
+    if (!sys.domain()) return std::to_string(threads.used) + ofAvailable;
+    const Communicator& comm = sys.domain()->communicator();
+    const int most = static_cast<int>(comm.max(static_cast<double>(threads.used)));
+    const int fewest = -static_cast<int>(comm.max(-static_cast<double>(threads.used)));
+    if (fewest == most) return std::to_string(most) + ofAvailable + " on every rank";
+    return std::to_string(fewest) + "-" + std::to_string(most) + ofAvailable + " per rank";
+}
+
 void printHeader(std::ostream& log, const std::string& caseDir, const System& sys, const ThreadUse& threads,
                  const Integrator& integrator,
                  const RunControl& control, std::size_t nFunctions, const DpdModel& model) {
@@ -127,7 +139,7 @@ void printHeader(std::ostream& log, const std::string& caseDir, const System& sy
     if (sys.domain())
         log << "Ranks          : " << sys.domain()->communicator().size() << ", slabs of cell planes along x "
             << sys.domain()->slabs().describe() << " (of " << sys.domain()->slabs().planes() << ")\n";
-    log << "Threads        : " << threads.used << " of " << threads.available << (sys.domain() ? " on the first rank" : "")
+    log << "Threads        : " << threadsText(sys, threads)
         << (threads.used < threads.available ? " (fewer particles than " + std::to_string(threads.perThread) +
                                                    " per thread: more would wait on each other)"
                                              : std::string())

@@ -61,10 +61,11 @@ sameSampling() { compareFiles sums "$1" "$2"; }
 
 # Runs case $1 on $2 ranks (0: no mpirun) with $3 threads; the log in $1/log. These scenes hold a few
 # thousand particles, fewer than the thread budget gives a second thread (core/ThreadBudget.hpp):
-# DPD_PARTICLES_PER_THREAD=1 makes every rank use the threads asked for, and the log must say so.
+# DPD_PARTICLES_PER_THREAD=1 makes every rank use the threads asked for, and the log must say so (on two
+# ranks or more "on every rank": the line gathers every rank's count).
 # Passive waiting: more threads than cores, whose spinning would starve the others.
 run() {
-    local c=$1 ranks=$2 threads=$3 status
+    local c=$1 ranks=$2 threads=$3 status expected
     export DPD_PARTICLES_PER_THREAD=1 OMP_WAIT_POLICY=passive
     if [ "$ranks" = 0 ]; then
         OMP_NUM_THREADS=$threads "$bin/dpdFoamLike" -case "$c" > "$c/log" 2>&1
@@ -72,8 +73,10 @@ run() {
         OMP_NUM_THREADS=$threads "${mpirun[@]}" -np "$ranks" "$bin/dpdFoamLike" -case "$c" > "$c/log" 2>&1
     fi
     status=$?
-    [ $status -ne 0 ] || grep -q "^Threads *: $threads of $threads" "$c/log" ||
-        { fail "$c ran on $(sed -n 's/^Threads *: //p' "$c/log" | head -n 1), not $threads threads"; return 1; }
+    expected="^Threads *: $threads of $threads\$"
+    [ "$ranks" -le 1 ] || expected="^Threads *: $threads of $threads on every rank\$"
+    [ $status -ne 0 ] || grep -q "$expected" "$c/log" ||
+        { fail "$c ran on $(sed -n 's/^Threads *: //p' "$c/log" | head -n 1), not $threads threads on each rank"; return 1; }
     return $status
 }
 
