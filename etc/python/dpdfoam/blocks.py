@@ -52,7 +52,9 @@ class SampledBins:
 
 
 def temperature(sums):
-    """kT per bin about a mean velocity varying linearly across the bin (sampling/BinProfile.cpp)."""
+    """kT per bin about a mean velocity varying linearly across the bin (sampling/BinProfile.cpp): the
+    variances over the dimension, the y of a 2-D run left out (the solver holds its vy at 0: a bin whose
+    sum of vy^2 is 0 is read as 2-D, as the file's dimension says)."""
     with np.errstate(invalid="ignore", divide="ignore"):
         n = sums[..., 0]
         mean_x = sums[..., 7] / n
@@ -63,7 +65,7 @@ def temperature(sums):
             var_v = sums[..., 4 + c] / n - mean_v ** 2
             cov = sums[..., 9 + c] / n - mean_v * mean_x
             total = total + var_v - cov ** 2 / var_x
-        return total / 3.0
+        return total / np.where(sums[..., 5] == 0.0, 2.0, 3.0)  # 2-D: the y term is 0
 
 
 def region_mean(sums, weights, region):

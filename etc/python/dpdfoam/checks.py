@@ -13,11 +13,12 @@ import sys
 
 
 def finite(value):
-    """Whether a number (or each of a sequence) is there and finite."""
+    """Whether a number (or each of a sequence, not empty: an empty one is no measurement) is there and
+    finite."""
     if value is None:
         return False
     if isinstance(value, (list, tuple)):
-        return all(finite(v) for v in value)
+        return len(value) > 0 and all(finite(v) for v in value)
     try:
         return math.isfinite(float(value))
     except (TypeError, ValueError):

@@ -31,6 +31,8 @@ def cells_on_bins(points, values, xs, zs):
     wx, wz = xs[1] - xs[0], zs[1] - zs[0]
     column = np.floor((points[:, 0] - (xs[0] - wx / 2)) / wx).astype(int)
     row = np.floor((points[:, 2] - (zs[0] - wz / 2)) / wz).astype(int)
+    inside = (column >= 0) & (column < len(xs)) & (row >= 0) & (row < len(zs))  # as BinLayout::binOf: -1 outside
+    row, column, values = row[inside], column[inside], np.asarray(values)[inside]
     n, total = np.zeros((len(zs), len(xs))), np.zeros((len(zs), len(xs)))
     np.add.at(n, (row, column), 1)
     np.add.at(total, (row, column), values)

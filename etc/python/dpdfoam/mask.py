@@ -2,27 +2,60 @@
 centres of a case's bins, the distance to the solid and the local pore size of the fluid, and the open
 band of rows fluid across the whole width (a crack along x), in pixels and in the box's units, and
 whether a line runs along such a band."""
+import subprocess
+import sys
+
 import numpy as np
 
 from .io import dictionary_value, vector
 
 
-def read_image_mask(path):
-    """An image mask's solid pixels (dark: grey below 1/2), row 0 the bottom (the picture's last row,
-    the smallest z, as the tools place it)."""
-    from matplotlib.image import imread
+def read_image_mask(path, rule=None):
+    """An image mask's solid pixels, row 0 the bottom (the picture's last row, the smallest z, as the
+    tools place it). A pixel's grey is the solver's (geometry/GreyImage.cpp): its level (0..255 in an
+    8-bit image), a colour pixel's the luminance 0.299 R + 0.587 G + 0.114 B. rule: which pixels are
+    solid, as a case says it (mask_rule: ("solidBelow", t), ("solidAbove", t) or ("solidValues", levels),
+    geometry/ImageMask.cpp); by default the dark ones, grey below half the full scale."""
+    from PIL import Image
 
-    img = imread(path)
-    grey = img[..., :3].mean(axis=-1) if img.ndim == 3 else img
-    return (grey < 0.5)[::-1]
+    with Image.open(path) as image:
+        if image.mode in ("P", "1"):  # VTK expands a palette to colours, 1-bit grey to 0 and 255
+            image = image.convert("RGBA" if image.mode == "P" else "L")
+        full = 65535.0 if image.mode.startswith("I") else 255.0
+        img = np.asarray(image, dtype=float)
+    if img.ndim == 3 and img.shape[-1] >= 3:
+        grey = 0.299 * img[..., 0] + 0.587 * img[..., 1] + 0.114 * img[..., 2]
+    else:
+        grey = img[..., 0] if img.ndim == 3 else img  # grey (+ alpha)
+    kind, level = rule if rule is not None else ("solidBelow", 0.5 * full)
+    solid = grey < level if kind == "solidBelow" else grey > level if kind == "solidAbove" else np.isin(grey, level)
+    return solid[::-1]
+
+
+def mask_rule(props):
+    """Which pixels a case's imageMask (constant/dpdProperties) makes solid, as the solver reads it
+    (geometry/GeometryDictionary.cpp: exactly one of solidValues, solidBelow, solidAbove): ("solidValues",
+    levels), ("solidBelow", t) or ("solidAbove", t); exits without exactly one."""
+    given = []
+    for key in ("solidValues", "solidBelow", "solidAbove"):
+        try:
+            given.append((key, dictionary_value(props, f"geometry/{key}")))
+        except subprocess.CalledProcessError:
+            pass
+    if len(given) != 1:
+        sys.exit(f"{props}: say which pixels are solid with exactly one of solidValues, solidBelow, solidAbove")
+    key, text = given[0]
+    return key, vector(text) if key == "solidValues" else float(text)
 
 
 def case_mask(case="."):
-    """The case's mask (constant/dpdProperties geometry/file), its path, and the box it covers in x and z
-    (system/randomEquilWallDict): (solid, path, (lower x, lower z), (upper x, upper z))."""
-    path = dictionary_value(f"{case}/constant/dpdProperties", "geometry/file").strip('"')
+    """The case's mask (constant/dpdProperties geometry/file, its solid as the case says: mask_rule), its
+    path, and the box it covers in x and z (system/randomEquilWallDict): (solid, path, (lower x, lower z),
+    (upper x, upper z))."""
+    props = f"{case}/constant/dpdProperties"
+    path = dictionary_value(props, "geometry/file").strip('"')
     lo, hi = (vector(dictionary_value(f"{case}/system/randomEquilWallDict", f"box/{k}")) for k in ("min", "max"))
-    return read_image_mask(f"{case}/{path}" if case != "." else path), path, lo[[0, 2]], hi[[0, 2]]
+    return read_image_mask(f"{case}/{path}" if case != "." else path, mask_rule(props)), path, lo[[0, 2]], hi[[0, 2]]
 
 
 def on_grid(solid, lo, hi, xs, zs):

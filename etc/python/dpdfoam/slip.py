@@ -276,7 +276,10 @@ def first_layer(table, walls, period, gas_fraction, cutoff):
     depths = np.unique(np.round(d, 9))
     profile = np.array([np.mean(t["density"][np.isclose(d, v)]) for v in depths])
     peak = int(np.argmax(profile))
-    minimum = peak + int(np.argmax(np.diff(profile[peak:]) > 0))  # the first bin where density rises again
+    rises = np.flatnonzero(np.diff(profile[peak:]) > 0)
+    if not len(rises):
+        return None  # no minimum past the peak (the densest depth the last: a density rising to the bulk)
+    minimum = peak + int(rises[0])  # the first bin where density rises again
     if depths[minimum] > 2.0 * cutoff:
         return None  # no packed layer (a fluid without conservative force: its density is the bulk's)
     layer = d < depths[minimum] - 1e-9

@@ -58,6 +58,8 @@ def unwrapped_chains(path):
     """Unwrapped bead positions of every chain: {chain: (L, 3) array}, from the first bead's position and
     the bonds' followed vectors."""
     with h5py.File(path, "r") as f:
+        if "bonds/pairs" not in f:
+            return {}  # no bonds: io/SnapshotBonds.cpp writes the bonds/ datasets only for bonds
         ids, pos = np.array(f["particles/id"]), np.array(f["particles/position"])
         pairs, vec, bond_chain = np.array(f["bonds/pairs"]), np.array(f["bonds/vector"]), np.array(f["bonds/chain"])
     row = {int(i): k for k, i in enumerate(ids)}

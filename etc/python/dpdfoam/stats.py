@@ -87,8 +87,9 @@ class BlockMean:
         return (self.error, self.dof)
 
     def allowance(self, z=Z_SIGMA):
-        """z standard errors read as the Student-t quantile of the same tail for the blocks' dof."""
-        return student_t(z, self.dof) * self.error
+        """z standard errors read as the Student-t quantile of the same tail for the blocks' dof; NaN
+        without a degree of freedom (a single block: no error to widen)."""
+        return student_t(z, self.dof) * self.error if self.dof > 0 else float("nan")
 
     def fmt(self, digits=4):
         return f"{self.value:.{digits}f} +- {self.error:.{digits}f}"

@@ -35,10 +35,13 @@ def apply_cost_model(rows):
 
 def crossing(points, q, level):
     """The step at which |error of q| first passes level (points sorted by dt): interpolated between
-    the last step below it and the first above it (a blow-up counts as above); None when never passed,
+    the last step below it and the first above it (a blow-up counts as above, a stable run with a NaN
+    error, not measured, as neither: skipped); None when never passed,
     '<dt' when already at the smallest step, 'dt0-dt1' when the run above it blew up."""
     previous = None
     for p in points:
+        if not p["unstable"] and math.isnan(p[q]):
+            continue  # not measured (measured()): neither below nor above the level
         if p["unstable"] or abs(p[q]) > level:
             if previous is None:
                 return "<%g" % p["dt"]

@@ -17,9 +17,10 @@ from .stats import BlockMean
 def block_index(times, start, length, m, closed=True):
     """Each time's super-block, 0 to m - 1, or -1 outside the window. closed: a time at the window's end
     (a snapshot written at endTime) counts in the last super-block."""
-    k = np.floor((np.asarray(times, dtype=float) - start) / length).astype(int)
-    if closed:
-        k = np.minimum(k, m - 1)
+    x = (np.asarray(times, dtype=float) - start) / length
+    k = np.floor(x).astype(int)
+    if closed:  # the end itself (to rounding: 1e-9 of a super-block), not the times after it
+        k = np.where((k == m) & (x <= m + 1e-9), m - 1, k)
     return np.where((k >= 0) & (k < m), k, -1)
 
 
