@@ -7,7 +7,7 @@ Checks (the standard error below its budget, then the difference within a fixed 
   - every asked b measured within max(0.15, 10 %) of the ask (budget half the bound);
   - the Couette and the Poiseuille channel asking the same b (1) within 0.1 of each other;
   - near the walls kT within 1 % of 1 over the first cutoff of fluid, the density's peak at most 1.2
-    times the bulk's (every channel).
+    times the bulk's (every channel; its standard error below PEAK_BUDGETS).
 Information: the image-mask channel against the planar one asking the same b; each channel against its
 simpleFoam twin with the asked b. The test mode: the same checks, bounds of three budgets (TEST_BUDGETS).
 """
@@ -25,6 +25,11 @@ from dpdfoam.plots import label, mark_walls, plt, save
 TEST_MODE = "-test" in sys.argv[1:]
 KT_BOUND = 0.01  # relative
 PEAK_BOUND = 1.2
+# Issue 45: the density's peak over the bulk's (the largest bin against the middle fifth's mean) first
+# with its standard error (the peak bin's and the bulk mean's errors in quadrature) within its budget,
+# then at most PEAK_BOUND, fixed. Measured: full size (2026-11-29, both calibrations' runs) 0.0008-0.0012
+# (peaks 1.070-1.096), budget 0.005; the test (2026-11-29) 0.0017-0.0021 (1.051-1.096), budget 0.01.
+PEAK_BUDGETS = {False: 0.005, True: 0.01}  # full size, test mode
 SAME_ASK_BOUND = 0.1  # two channels asking the same b: Couette against Poiseuille
 # The test's budgets (bound: 3 budgets) from its two runs of 2026-11-29: b's total error 0.27-0.34, mostly
 # the calibration's; Couette - Poiseuille 0.096-0.115. kT as at full size (its error 0.001 in the test).
@@ -45,17 +50,35 @@ def asked_check(checks, where, asked, value, run, calibration):
                    f"{as_number(value):.3f} +- {total:.3f} (run {as_number(run):.3f}, calibration {as_number(calibration):.3f})")
 
 
+def peak_errors(table, bulk):
+    """The standard errors of near_wall_layer's peak (the densest bin's) and bulk density (the mean over
+    the bins `bulk` selects)."""
+    rho, err = table["density"], table["densityErr"]
+    return float(err[np.argmax(rho)]), float(np.sqrt(np.sum(err[bulk] ** 2)) / np.count_nonzero(bulk))
+
+
+def peak_check(checks, where, peak, peak_err, bulk, bulk_err, budget=PEAK_BUDGETS[TEST_MODE]):
+    """The density's peak over the bulk's: its standard error within the budget, then at most PEAK_BOUND."""
+    peak, peak_err, bulk, bulk_err = (as_number(v) for v in (peak, peak_err, bulk, bulk_err))
+    ratio = peak / bulk
+    error = abs(ratio) * math.hypot(peak_err / peak, bulk_err / bulk)
+    checks.bounded(f"{where}: the density's peak at most {PEAK_BOUND:g} times the bulk's (standard error below "
+                   f"{budget:g})", ratio, error, budget, None, PEAK_BOUND,
+                   f"{ratio:.3f} +- {error:.4f} ({peak:.3f} against {bulk:.3f})")
+
+
 def channel(checks, case, where, asked):
     """One channel asking b, its checks; (b, its run's and calibration's errors, walls, kT, error, peak)."""
     value, run, calibration, walls = asked_slip_measured(case)
     asked_check(checks, where, asked, value, run, calibration)
     t = latest_profile(case)
-    kT, kT_err, peak, bulk = near_wall_layer(t, central(t["z"]))
+    middle = central(t["z"])
+    kT, kT_err, peak, bulk = near_wall_layer(t, middle)
     checks.bounded(f"{where}: kT over the first cutoff of fluid within {100 * KT_BOUND:g} % of 1 (standard error below "
                    f"{100 * KT_BOUND / 3:g} %)", kT - 1.0, kT_err, KT_BOUND / 3, -KT_BOUND, KT_BOUND,
                    f"kT {kT:.4f} +- {kT_err:.4f}")
-    checks.add(f"{where}: the density's peak at most {PEAK_BOUND:g} times the bulk's", peak / bulk <= PEAK_BOUND,
-               f"{peak / bulk:.3f} ({peak:.3f} against {bulk:.3f})", peak / bulk)
+    peak_err, bulk_err = peak_errors(t, middle)
+    peak_check(checks, where, peak, peak_err, bulk, bulk_err)
     return value, run, calibration, walls, kT, kT_err, peak / bulk
 
 

@@ -14,7 +14,7 @@ import sys
 
 import numpy as np
 
-from dpdfoam.checks import Checks, write_results
+from dpdfoam.checks import Checks, as_number, write_results
 from dpdfoam.io import latest_fit, project_path, read_sweep, read_text
 from dpdfoam.plots import label, plt, save
 from dpdfoam.published import read_published, table_value
@@ -29,8 +29,15 @@ A_WW = 15.0
 # asked to decide a change of 1 r_c: budget 0.33.
 DIFFERENCE_BUDGET = 0.33 if TEST_MODE else 0.15
 # Scene 2: the same rule at each gamma_fw, the budget a third of the published set's difference from
-# the paper there (full size); the test's short runs again decide a change of 1 r_c.
+# the paper there at full size, stated (README, 2026-11-25: 1.455 at gamma_fw 1, 0.283 at 13.5), not
+# taken from the run; the test's short runs again decide a change of 1 r_c.
+SCENE2_BUDGETS = {1.0: 1.455 / 3, 13.5: 0.283 / 3}
 SCENE2_TEST_BUDGET = 0.33
+
+
+def scene2_budget(gamma, test):
+    """Scene 2's budget at gamma_fw (NaN, which fails, for a gamma_fw the study does not state)."""
+    return SCENE2_TEST_BUDGET if test else SCENE2_BUDGETS.get(float(gamma), float("nan"))
 
 WHAT = {
     "published": "the published parameters (couetteSlip's defaults)",
@@ -69,11 +76,13 @@ def sweep_runs(directory):
 
 
 def decided(checks, name, change, error, budget):
-    """The change must be found (at least 3 standard errors) or known well enough to rule it out as the
-    cause of the difference (its standard error within the budget); a change that is not a number
-    decides nothing."""
+    """The change must be found (at least 3 standard errors: its error within a third of it) or known well
+    enough to rule it out as the cause of the difference (its standard error within the budget, fixed by
+    the difference to explain, not by the run); a change, error or budget that is not a number (NaN,
+    missing, empty) decides nothing."""
+    change, error, budget = as_number(change), as_number(error), as_number(budget)
     checks.add(f"{name}: the change decided (at least 3 standard errors, or its standard error within {budget:.3g})",
-               abs(change) >= 3 * error or error <= budget, f"{change:+.4f} +- {error:.4f}", change, error)
+               abs(change) >= 3 * error or error <= budget, f"{change:+.4f} +- {error:.4f}", change, error, budget)
 
 
 def scene2_table(lines, checks):
@@ -96,7 +105,7 @@ def scene2_table(lines, checks):
             continue
         d, de = b - base[g][0], math.hypot(e, base[g][1])
         lines.append(f"scene2 {name:15s} {g:5g}  {b0:+.4f}  {b1:+.4f}  {b:+.4f} +- {e:.4f}   {d:+.4f} +- {de:.4f}  ({d / de:+.1f})")
-        budget = SCENE2_TEST_BUDGET if TEST_MODE else abs(base[g][0] - published_b(g)) / 3
+        budget = scene2_budget(g, TEST_MODE)
         decided(checks, f"scene 2, {name} at gamma_fw {g:g}", d, de, budget)
     lines += [f"# scene 2, the published set here minus the paper at gamma_fw {g:g}: {b - published_b(g):+.4f} +- {e:.4f}"
               for g, (b, e) in sorted(base.items())]
