@@ -16,11 +16,40 @@ from dpdfoam.io import read_dict, read_text, run_finished
 from dpdfoam.plots import plt, save
 
 NU_SAW = 0.588  # the self-avoiding walk (renormalisation group)
-NU_BOUND = 0.04  # the full run's bound on |nu - NU_SAW| (main: why)
+NU_BOUND = 0.04  # the full run's bound on |nu - NU_SAW| (exponent_check: why)
 NU_ERROR_BUDGET = 0.01
-# Test mode (N 5, 10, 20; 420 time units sampled): nu's error measured 0.008 (0.014 over 120); budget
-# 0.012, and nu more than 3 budgets above the ideal chain's 1/2, which an ideal chain fails.
+# Test mode (N 5, 10, 20; 420 time units sampled): nu's error measured 0.0085 (0.014 over 120); budget
+# 0.012. An ideal (phantom) chain's <R_g^2> = <b^2> (N^2 - 1) / (6 N) gives over these short chains an
+# effective exponent above 1/2: 0.514 from the three N, 0.518 with the run's weights, 0.522 from N 5-10
+# alone; NU_IDEAL_TEST is the largest. nu must lie 3 budgets above it, which an ideal chain fails.
 NU_TEST_ERROR_BUDGET = 0.012
+NU_IDEAL_TEST = 0.522
+
+
+def exponent_bounds(test):
+    """The exponent's standard-error budget and its fixed bounds (lower, upper). Full size: within
+    NU_BOUND of the self-avoiding walk's 0.588. Test: above the ideal chain's effective exponent over
+    N 5-20 by 3 budgets, below the full upper bound plus 3 budgets."""
+    if test:
+        budget = NU_TEST_ERROR_BUDGET
+        return budget, NU_IDEAL_TEST + 3 * budget, NU_SAW + NU_BOUND + 3 * budget
+    return NU_ERROR_BUDGET, NU_SAW - NU_BOUND, NU_SAW + NU_BOUND
+
+
+def exponent_check(checks, nu, nu_err, test):
+    """The chains are self-avoiding (issue 45: nu's standard error within its budget, then nu within fixed
+    bounds; a NaN, missing or empty nu or error fails). Full size: the budget 0.01 (measured 0.005; twice
+    that still decides), nu within a fixed 0.04 of the self-avoiding walk's 0.588, the room the effective
+    exponent over N 10-60 needs for its corrections to scaling (short chains' soft bonds), while an ideal
+    chain's (0.503 over these N) lies 4.5 budgets below the bound. Test (N 5-20): nu's error within 0.012,
+    nu 3 budgets above the ideal chain's effective exponent (0.522 + 0.036 = 0.558) and below 0.664."""
+    budget, lower, upper = exponent_bounds(test)
+    if test:
+        name = (f"the chains swell: {lower:.3f} <= nu <= {upper:.3f}, 3 x {budget} beyond an ideal chain's {NU_IDEAL_TEST} "
+                f"(standard error below {budget})")
+    else:
+        name = f"self-avoiding chains: nu within {NU_BOUND} of {NU_SAW} (standard error below {budget})"
+    return checks.bounded(name, nu, nu_err, budget, lower, upper)
 
 
 def run_figures(case):
@@ -36,18 +65,7 @@ def main():
     nu, nu_err, chi2, c = s["nu"], s["nuError"], s["chi2PerDof"], s["logAmplitude"]
     figures = [run_figures(f"sweep/N{int(k)}") for k in n]
     checks = Checks()
-    if test:
-        # Test mode (N 5-20, short): the chains are not ideal: nu above 1/2 by more than 3 budgets.
-        checks.bounded(f"the chains swell: nu > 0.5 + 3 x {NU_TEST_ERROR_BUDGET} (standard error below {NU_TEST_ERROR_BUDGET})",
-                       nu, nu_err, NU_TEST_ERROR_BUDGET, 0.5 + 3 * NU_TEST_ERROR_BUDGET, None)
-    else:
-        # The exponent of a self-avoiding chain: first its error within the budget (measured 0.005 at
-        # full size; twice that still decides), then nu within a fixed 0.04 of the self-avoiding walk's
-        # 0.588, the room the effective exponent over N 10-60 needs for its corrections to scaling
-        # (short chains' soft bonds) while an ideal chain's 1/2 lies more than twice as far.
-        checks.add("error of nu within its budget 0.01", nu_err <= NU_ERROR_BUDGET, f"{nu_err:.4f}")
-        checks.add(f"self-avoiding chains: nu within {NU_BOUND} of {NU_SAW}", abs(nu - NU_SAW) < NU_BOUND,
-                   f"nu = {nu:.4f} +- {nu_err:.4f}")
+    exponent_check(checks, nu, nu_err, test)
     with open("results.dat", "w") as f:
         f.write("# Single FENE chains (H 6, r_max 3) in the polymer scene's solvent (rho 4, a 18.75, gamma 4.5)\n")
         f.write(f"# nu {nu:.4f} +- {nu_err:.4f} (chainScaling: fit of ln R_g^2 = 2 nu ln N + c, chi2/dof {chi2:.2f}); self-avoiding walk {NU_SAW}, ideal 0.5\n")

@@ -21,11 +21,12 @@ Checks, full scene (the issue's criteria):
   - each line (the crack's centre line): relative L2 of DPD against simpleFoam < 10 %;
   - mean velocity within 10 %: meanVelocityRatio (over the compared bins) and the superficial velocity
     (Darcy permeability) ratio.
-Each check first asserts that the noise of its quantity is within a budget (NOISE_BUDGETS below), so
-that a run too noisy to decide fails instead of passing more easily; the bound is then fixed.
-Test mode (40 x 40 mask, 160 time units of sampling): each bound the full one plus three test budgets
-(fixed, derived below for the shorter run). There the crack line (noise ~0.12 over 40 bins) only
-catches gross errors (a slipping or missing wall, a unit slip); the full scene decides it.
+Each check (issue 45) first holds the noise of its quantity (its standard error; the line's noise L2)
+within a budget (NOISE_BUDGETS below), so that a run too noisy to decide fails instead of passing more
+easily, then the value within a fixed bound; a NaN, missing or empty number fails.
+Test mode (40 x 40 mask, 160 time units of sampling): the bounds of a mean (kT, the velocity next to the
+grains, the mean velocity) are the full ones plus three test budgets (fixed, derived below for the
+shorter run); the crack line's, where the noise adds in quadrature, is TEST_LINE_BOUND (derived below).
 
 Where the two disagree: each fluid bin gets the local pore size (the diameter of the largest disc in
 the fluid that covers it, from the mask) and its distance to the solid; results.dat gives the relative
@@ -36,7 +37,7 @@ import sys
 
 import numpy as np
 
-from dpdfoam.checks import Checks, write_results
+from dpdfoam.checks import Checks, as_number, finite, write_results
 from dpdfoam.fields import CLASS_COLUMNS, FlowTemperature, TwinBins, class_lines, compare_summary, extent, read_grid
 from dpdfoam.io import (built_particles, finished_solver_log, function_start, latest, latest_compare_lines, read_dict,
                         read_sections)
@@ -53,10 +54,38 @@ test_mode = "-test" in sys.argv[1:]
 # near-grain velocity 0.63 % of the peak; four times the sampling halves each): budgets 1.3 x the
 # expected. Velocity next to the grains: standard error of the mean over the near-grain bins, relative
 # to the crack's peak.
+#   Test mode, measured (2026-11-30, five seeds: 2031, the tutorial's, and 1001-1004): noiseL2
+#   0.129-0.141, superficial 1.33-1.43 %, kT 0.0015-0.0024, next to the grains 0.31 % of the peak.
+#   The mean velocity's test bound stays 0.10 + 3 x 0.018 = 0.154: between seeds (the walls' realisation
+#   and the viscosity box's nu, 0.263-0.284) the mean velocity ratio spreads 0.908-1.040 and the
+#   permeability ratio 0.952-1.081 (standard deviations 0.051 and 0.052, three to four times the
+#   quoted standard error), so that a bound tighter than ~0.15 would fail a correct run of another seed.
 NOISE_BUDGETS = {False: {"line": 0.05, "mean": 0.003, "kT": 0.0012, "wall": 0.0003},
                  True: {"line": 0.15, "mean": 0.018, "kT": 0.003, "wall": 0.004}}
-BUDGET = NOISE_BUDGETS[test_mode]
-WIDEN = 3.0 if test_mode else 0.0  # test bounds: the full bound plus three test budgets, fixed
+# The full scene's bounds: kT within 3.5 % of 1; next to the grains below 10 % of the crack's peak, and
+# within 3 % of that peak of simpleFoam's there; the crack line's relative L2 below 10 %; the mean and
+# superficial velocities within 10 % of simpleFoam's.
+KT_BOUND, WALL_BOUND, WALL_TWIN_BOUND, LINE_BOUND, MEAN_BOUND = 0.035, 0.10, 0.03, 0.10, 0.10
+WIDEN = 3.0  # test bounds of a mean: the full bound plus three test budgets, fixed
+# The crack line in test mode. The noise adds to the L2 in quadrature, L2^2 = L2_flow^2 + noiseL2^2, so
+# that adding three noise budgets (0.10 + 3 x 0.15 = 0.55, the bound until 2026-11-30) let a halved flow
+# pass (L2 ~0.52). The bound: the full bound and the noise budget in quadrature, sqrt(0.10^2 + 0.15^2) =
+# 0.180, plus three standard deviations of the L2 itself over the line's 40 bins, whose noise is
+# independent from bin to bin: sd(L2^2) = sqrt(2 noise^4 + 4 L2_flow^2 noise^2) / sqrt(40) = 0.0069, sd(L2)
+# = 0.019: 0.180 + 0.058 = 0.24. Measured over the five seeds: 0.150-0.184 (mean 0.170, standard
+# deviation 0.013; noise 0.129-0.141, the line's mean ratio 0.90-0.99), 5 standard deviations below.
+TEST_LINE_BOUND = 0.24
+
+
+def bound(kind, test):
+    """A check's fixed bound: the full scene's, in test mode widened by three test budgets (the crack line:
+    TEST_LINE_BOUND)."""
+    full = {"kT": KT_BOUND, "wall": WALL_BOUND, "twin": WALL_TWIN_BOUND, "line": LINE_BOUND, "mean": MEAN_BOUND}[kind]
+    if not test:
+        return full
+    if kind == "line":
+        return TEST_LINE_BOUND
+    return full + WIDEN * NOISE_BUDGETS[True]["wall" if kind == "twin" else kind]
 
 
 def next_to_grains(bins, near, prof, lines):
@@ -67,42 +96,76 @@ def next_to_grains(bins, near, prof, lines):
     return dict(bins.region_means(near), peak=peaks[line], line=line)
 
 
-def make_checks(cmp, lines, kT, inside, wall):
-    """The checks: each quantity's noise within its budget, then its fixed bound (module docstring)."""
-    line_tol = 0.10 + WIDEN * BUDGET["line"]
-    mean_tol = 0.10 + WIDEN * BUDGET["mean"]
-    kT_tol = 0.035 + WIDEN * BUDGET["kT"]
-    # Next to the grains: 10 % of the crack's peak. In the test's small mask the bins the grains cut
-    # hold more of the flow: simpleFoam's own velocity there is ~11 % of the peak (0.0195 of 0.182),
-    # so a correct no-slip run sits at the bound. There the bound is the continuum's value plus the
-    # 3 %-of-peak allowance of the next check, plus three test budgets like every test bound; a
-    # slipping wall (velocity of the order of the pore's) is still far above it.
-    u_peak, u_dpd, u_fvm = wall["peak"], wall["dpd"], wall["fvm"]
-    wall_bound = 0.1 * u_peak
-    if test_mode:
-        wall_bound = max(wall_bound, abs(u_fvm) + 0.03 * u_peak) + WIDEN * BUDGET["wall"] * u_peak
-    super_err = cmp["superficialVelocityDPDErr"] / cmp["superficialVelocityFVM"]
-    noise = {**{f"line {name}" if len(lines) > 1 else "line": line["noiseL2"] for name, line in lines.items()},
-             "mean": super_err, "kT": kT.error, "wall": wall["se"] / u_peak}
+def kT_check(checks, what, kT, error, test):
+    """The mean kT within the bound of 1, the kT's standard error (the log series') within its budget."""
+    budget, tol = NOISE_BUDGETS[test]["kT"], bound("kT", test)
+    shown = f"{as_number(kT):.4f}" + (f" +- {as_number(error):.4f}" if what != "the bins" else "")
+    return checks.bounded(f"mean kT of {what} within {tol:.3f} of 1 (standard error below {budget:g})", kT, error, budget,
+                          1.0 - tol, 1.0 + tol, shown)
+
+
+def inside_check(checks, inside):
+    """No fluid particle inside the solid at the end (the solver's count): exactly 0; a missing count fails."""
+    return checks.add("no fluid particle inside the solid at the end", inside == 0 and finite(inside), f"{inside}")
+
+
+def wall_checks(checks, u_dpd, u_fvm, error, peak, line, bins, test):
+    """Velocity near zero next to the grains (the mean DPD velocity over the bins the grains' surface
+    passes through, its standard error, the twin's mean there, the crack's peak): below 10 % of the peak,
+    and within 3 % of that peak of simpleFoam's there, each in units of the peak, its standard error first
+    within the budget. In the test's small mask the bins the grains cut hold more of the flow:
+    simpleFoam's own velocity there is ~11 % of the peak (0.0195 of 0.182), so a correct no-slip run would
+    sit at the bound; there the first bound is the larger of 10 % and the continuum's value plus the 3 %
+    of the second check, plus three test budgets like every test bound of a mean; a slipping wall
+    (velocity of the order of the pore's) is still far above it."""
+    u_dpd, u_fvm, error, peak = (as_number(v) for v in (u_dpd, u_fvm, error, peak))
+    peak = peak if peak > 0 else float("nan")  # no flow to scale by: fails
+    budget = NOISE_BUDGETS[test]["wall"]
+    wall_bound = WALL_BOUND
+    if test:
+        wall_bound = max(WALL_BOUND, abs(u_fvm / peak) + WALL_TWIN_BOUND) + WIDEN * budget
+    twin_bound = bound("twin", test)
+    ok = checks.bounded(f"velocity next to the grains < {wall_bound:.1%} of the {line}'s peak (standard error below "
+                        f"{budget:g} of it)", u_dpd / peak, error / peak, budget, -wall_bound, wall_bound,
+                        f"{u_dpd:.4f} (peak {peak:.4f})")
+    return checks.bounded(f"velocity next to the grains within {twin_bound:.1%} of the peak of simpleFoam's there "
+                          f"(standard error below {budget:g} of it)", (u_dpd - u_fvm) / peak, error / peak, budget,
+                          -twin_bound, twin_bound, f"DPD {u_dpd:.4f}, simpleFoam {u_fvm:.4f} over {bins} bins") and ok
+
+
+def line_check(checks, name, l2, noise, points, test):
+    """A line of system/makeFoamCaseDict (the crack's centre line): the relative L2 of DPD against
+    simpleFoam below the bound, its noise L2 (what the DPD errors alone give) first within the budget."""
+    budget, tol = NOISE_BUDGETS[test]["line"], bound("line", test)
+    return checks.bounded(f"{name} centre line: relative L2 < {tol:.3f} (noise L2 below {budget:g})", l2, noise, budget,
+                          None, tol, f"{as_number(l2):.4f} (noise {as_number(noise):.4f}, "
+                          f"{int(as_number(points)) if finite(points) else points} bins)")
+
+
+def mean_check(checks, what, ratio, error, test):
+    """A mean velocity of DPD over simpleFoam's (over the compared bins; the superficial velocity, i.e. the
+    permeability): within the bound of 1, the superficial velocity's relative standard error first within
+    the budget."""
+    budget, tol = NOISE_BUDGETS[test]["mean"], bound("mean", test)
+    return checks.bounded(f"{what} within {tol:.3f} (standard error below {budget:g})", ratio, error, budget, 1.0 - tol,
+                          1.0 + tol, f"{as_number(ratio):.4f} +- {as_number(error):.4f}")
+
+
+def make_checks(cmp, lines, kT, inside, wall, test=None):
+    """The checks (module docstring), from compareFVM's summary and lines, the kT (FlowTemperature), the
+    particles inside the solid and the velocity next to the grains (next_to_grains)."""
+    test = test_mode if test is None else test
+    twin = as_number(cmp["superficialVelocityFVM"])
+    super_err = as_number(cmp["superficialVelocityDPDErr"]) / twin if twin > 0 else float("nan")  # no twin flow: fails
     checks = Checks()
-    for name, value in noise.items():
-        limit = BUDGET[name.split()[0]]
-        checks.add(f"noise of the {name} within its budget {limit:g}", value <= limit, f"{value:.4g}")
-    checks.add(f"mean kT of the bins within {kT_tol:.3f} of 1", abs(kT.bins - 1) < kT_tol, f"{kT.bins:.4f}")
-    checks.add(f"mean kT of the log's series within {kT_tol:.3f} of 1", abs(kT.mean - 1) < kT_tol, f"{kT.mean:.4f} +- {kT.error:.4f}")
-    checks.add("no fluid particle inside the solid at the end", inside == 0, f"{inside}")
-    checks.add(f"velocity next to the grains < {wall_bound / u_peak:.1%} of the {wall['line']}'s peak", abs(u_dpd) < wall_bound,
-               f"{u_dpd:.4f} (peak {u_peak:.4f})")
-    checks.add("velocity next to the grains within 3 % of the peak of simpleFoam's there",
-               abs(u_dpd - u_fvm) < 0.03 * u_peak + WIDEN * BUDGET["wall"] * u_peak,
-               f"DPD {u_dpd:.4f}, simpleFoam {u_fvm:.4f} over {wall['bins']} bins")
+    kT_check(checks, "the bins", kT.bins, kT.error, test)
+    kT_check(checks, "the log's series", kT.mean, kT.error, test)
+    inside_check(checks, inside)
+    wall_checks(checks, wall["dpd"], wall["fvm"], wall["se"], wall["peak"], wall["line"], wall["bins"], test)
     for name, line in lines.items():
-        checks.add(f"{name} centre line: relative L2 < {line_tol:.3f}", line["L2"] < line_tol,
-                   f"{line['L2']:.4f} (noise {line['noiseL2']:.4f}, {int(line['points'])} bins)")
-    checks.add(f"mean velocity over the compared bins within {mean_tol:.3f}", abs(cmp["meanVelocityRatio"] - 1) < mean_tol,
-               f"{cmp['meanVelocityRatio']:.4f}")
-    checks.add(f"superficial velocity (permeability) within {mean_tol:.3f}", abs(cmp["permeabilityRatio"] - 1) < mean_tol,
-               f"{cmp['permeabilityRatio']:.4f} +- {super_err:.4f}")
+        line_check(checks, name, line["L2"], line["noiseL2"], line["points"], test)
+    mean_check(checks, "mean velocity over the compared bins", cmp["meanVelocityRatio"], super_err, test)
+    mean_check(checks, "superficial velocity (permeability)", cmp["permeabilityRatio"], super_err, test)
     return checks
 
 
