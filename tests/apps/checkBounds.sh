@@ -229,7 +229,7 @@ expect("stripedWall calibration: b rises just within 3 budgets", True,
 expect("stripedWall calibration: one gamma_L", False, lambda c: rise(c, CG[:1], CB[:1], CE[:1], False))
 
 # speedAccuracy. checks(rows, reference, test): each Verlet-type scheme at its smallest step (standard
-# errors within budget, kT and pressure within 5 % and nu within 10 % plus 4 budgets) and stopped at a
+# errors within budget, kT within 3 %, pressure within 0.5 % and nu within 10 % plus 4 budgets) and stopped at a
 # step of 0.15 or more. Good: two schemes with standard errors in the ranges the full study measured
 # (plotResults.py's BUDGETS comment) and errors of the same size.
 
@@ -255,13 +255,18 @@ for q, value in (("nu", NAN), ("nuse", NAN), ("kT", NAN), ("Pse", NAN)):
     expect(f"speedAccuracy: {q} NaN", False, lambda c: c.rows.extend(sa.checks(study(**{q: value}), REF, False).rows))
 expect("speedAccuracy: nu's error over its budget", False,
        lambda c: c.rows.extend(sa.checks(study(nuse=0.09), REF, False).rows))
-bound = sa.LEVELS["kT"] + 4 * sa.BUDGETS[False]["kT"]
-expect("speedAccuracy: kT just beyond its bound", False,
-       lambda c: c.rows.extend(sa.checks(study(kT=bound + 0.001), REF, False).rows))
-expect("speedAccuracy: kT just within its bound", True,
-       lambda c: c.rows.extend(sa.checks(study(kT=bound - 0.001), REF, False).rows))
-expect("speedAccuracy: nu 10 % + 4 budgets off", False,
-       lambda c: c.rows.extend(sa.checks(study(nu=-(0.10 + 4 * 0.085) - 0.001), REF, False).rows))
+for test in (False, True):
+    mode = "test mode" if test else "full study"
+    for q in ("kT", "P", "nu"):
+        edge = sa.BOUNDS[test][q]
+        for sign in (1, -1):
+            expect(f"speedAccuracy ({mode}): {q} error {sign * (edge + 0.001):+.4f}, just beyond its bound", False,
+                   lambda c: c.rows.extend(sa.checks(study(**{q: sign * (edge + 0.001)}), REF, test).rows))
+        expect(f"speedAccuracy ({mode}): {q} error {edge - 0.001:+.4f}, just within its bound", True,
+               lambda c: c.rows.extend(sa.checks(study(**{q: edge - 0.001}), REF, test).rows))
+# The old bounds (level + 4 budgets) let these pass: kT 6 % off, pressure 2 % off.
+expect("speedAccuracy: kT 6 % off", False, lambda c: c.rows.extend(sa.checks(study(kT=0.06), REF, False).rows))
+expect("speedAccuracy: pressure 2 % off", False, lambda c: c.rows.extend(sa.checks(study(P=0.02), REF, True).rows))
 expect("speedAccuracy: the smallest step blew up", False,
        lambda c: c.rows.extend(sa.checks(study(unstable=True), REF, False).rows))
 expect("speedAccuracy: dt 0.15 not stopped", False, lambda c: c.rows.extend(sa.checks(study(stable=True), REF, False).rows))
