@@ -35,6 +35,11 @@ Modules:
                 profiles), a profile near its walls, channels compared with long-block errors
     stepstudy   a study of the time step per integrator: cost model, where an error passes a level,
                 blow-ups, the largest step that keeps a property, equal accuracy, the pictures
+    lattice_wall  the lattice-wall Poiseuille channel (tutorials/channel/poiseuille/latticeWall): its measures
+                against the fluid without walls, lattice and random walls compared with long-block errors
+                (no slip, nu, the pairs' agreement), the simpleFoam twin against the analytic parabola
+    striped     the striped-wall scene (tutorials/channel/stripedWall): the calibration's choice of gamma_L,
+                the slip tensor's studies against the continuum reference (StripedStudy), the pictures
 
 The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip,
 chainScaling): the package reads their results (fitSlipLength's superBlocks entry gives the jackknife

@@ -7,17 +7,13 @@ analytic profile, writes results.dat, and exits non-zero when a check fails. The
 lattice walls with the random walls of randomMask/ and randomGmsh/ (wallComparison.py): walls.png,
 resultsWalls.dat and their checks.
 """
-import math
 import sys
-
-import numpy as np
 
 import wallComparison as wc  # this tutorial's wall comparison, beside this script
 from dpdfoam.channel import no_wall_reference
 from dpdfoam.checks import Checks, relative_difference, write_results
 from dpdfoam.io import body_force, latest_fit, latest_profile, read_dict, wall_planes
-from dpdfoam.plots import draw_kT_of_shear, draw_no_slip_poiseuille, label, mark_walls, plt, save
-from dpdfoam.sweep import kT_over_no_wall, weighted_error
+from dpdfoam.lattice_wall import channel_measures, draw_channel
 
 # Standard-error budgets (issue 45; full size, test mode); the bounds stay the physical 3 % and 0.1,
 # at least 2.5 budgets wide. The lattice channel's slip, fitSlipLength's error: full 0.0076-0.0091
@@ -29,25 +25,6 @@ LATTICE_SLIP_BUDGET = (wc.SLIP_BOUND / 3, 0.04)
 # 0.017 % full size): budgets about twice the largest measured, then the fixed bounds.
 KT_BUDGET = (0.001, 0.002)
 DENSITY_BUDGET = 0.01
-
-
-def channel_measures(prof, ref, walls, g, cutoff):
-    """The interior's density (mean, flatness, a bin's largest relative error), the mean kT, and the
-    bulk's kT minus the no-wall box's at the same shear rate with the difference's standard error."""
-    z, rho, count, box = prof["z"], prof["density"], prof["count"], ref["table"]
-    d, centre = walls[1] - walls[0], 0.5 * (walls[0] + walls[1])
-    interior = np.abs(z - centre) < 0.5 * d - 1.0
-    rho_mean = np.average(rho[interior])
-    # kT against the local shear rate: channel bulk (beyond 3 cutoffs from the walls, which take heat
-    # away) against the periodic box without walls at the same shear rate.
-    bulk = np.abs(z - centre) < 0.5 * d - 3.0 * cutoff
-    return {"rho": rho_mean, "flatness": np.max(np.abs(rho[interior] / rho_mean - 1.0)),
-            "densityError": np.max(prof["densityErr"][interior] / rho[interior]),
-            "kT": np.average(prof["kT"], weights=count), "kTBox": np.average(box["kT"], weights=box["count"]),
-            "kTCentre": np.average(prof["kT"][np.abs(z - centre) < 1.0]),
-            "heating": kT_over_no_wall(prof, bulk, centre, g, ref["nu"], ref["kT_of_shear"]),
-            "heatingError": math.hypot(weighted_error(count[bulk], prof["kTErr"][bulk]),
-                                       weighted_error(box["count"], box["kTErr"]))}
 
 
 def main():
@@ -104,30 +81,10 @@ def main():
         f"kT_maxShear       {kT_p[-1]:.5f} (no-wall box at shear {shear_p[-1]:.3f}: viscous heating)",
         f"kT_centre         {m['kTCentre']:.5f} (within one cutoff of the centre)",
         f"density_interior  {m['rho']:.4f}, flat within {100 * m['flatness']:.2f} %"], checks)
-    plot(prof, m["rho"], walls, g, ref, kT_set, f"nu = {nu_wall:.4f} (walls) vs {nu_ref:.4f} (no walls), "
-         f"slip {slip[0]:+.3f} / {slip[1]:+.3f}")
-    return checks.status()
-
-
-def plot(prof, rho_mean, walls, g, ref, kT_set, summary):
-    """poiseuille.png: velocity with the analytic profile, density, kT with the no-wall box's."""
-    z, nu_ref = prof["z"], ref["nu"]
-    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
-    ax[0].errorbar(z, prof["ux"], yerr=prof["uxErr"], fmt="o", ms=3, label="DPD, frozen three-layer walls")
-    draw_no_slip_poiseuille(ax[0], walls, g, nu_ref, f"analytic, no slip, nu = {nu_ref:.4f} (no-wall run)")
-    label(ax[0], "velocity", "z", "u_x", legend=8)
-    ax[1].plot(z, prof["density"], "o-", ms=3)
-    ax[1].axhline(rho_mean, color="k", lw=0.8)
-    label(ax[1], "density", "z", "number density")
-    ax[2].plot(z, prof["kT"], "o-", ms=3)
-    ax[2].axhline(kT_set, color="k", lw=0.8, label="set kT")
-    draw_kT_of_shear(ax[2], 0.5 * (walls[0] + walls[1]), ref["kT_of_shear"], g, nu_ref)
-    ax[2].set_ylim(kT_set * 0.9, kT_set * 1.15)
-    label(ax[2], "temperature", "z", "kT about the local flow", legend=8)
-    mark_walls(ax, walls)
-    fig.suptitle(f"Poiseuille flow, d = {walls[1] - walls[0]:g}, g = {g:g}: {summary}")
-    save(fig, "poiseuille.png")
+    draw_channel(prof, m["rho"], walls, g, ref, kT_set, f"nu = {nu_wall:.4f} (walls) vs {nu_ref:.4f} (no walls), "
+                 f"slip {slip[0]:+.3f} / {slip[1]:+.3f}")  # poiseuille.png
     print("Written poiseuille.png and results.dat")
+    return checks.status()
 
 
 if __name__ == "__main__":
