@@ -42,6 +42,16 @@ Modules:
                 (no slip, nu, the pairs' agreement), the simpleFoam twin against the analytic parabola
     striped     the striped-wall scene (tutorials/channel/stripedWall): the calibration's choice of gamma_L,
                 the slip tensor's studies against the continuum reference (StripedStudy), the pictures
+    poiseuille  scene 1 as published (tutorials/channel/poiseuille): each seed's run of the FCC and random
+                walls (SeedRun), their means over the seeds, poiseuille.png, the bounce layer's alpha sweep
+    couette     the Couette slip scene (tutorials/channel/couetteSlip): the shear stress's flatness, nu
+                and kT of the first channel and the slip's growth with a_wf checked, the pictures
+    slip_length the slip length as the user's input (tutorials/channel/slipLength): the channel's middle,
+                the density peak's errors, slipLength.png
+    polymer_channel  FENE chains in a Poiseuille channel (tutorials/polymer/channel): a case's flow, heat,
+                beads, chains and the paper's grid (Case), the checks, results<variant>.dat, the pictures
+    porous      the porous medium (tutorials/porous/porousMedium): the checks at a tutorial's budgets and
+                bounds (PorousChecks), the velocity next to the grains, the pictures
 
 The fits are the C++ tools' (fitSlipLength, compareFVM, slipTensor, hydrodynamicWall, stripedSlip,
 chainScaling): the package reads their results (fitSlipLength's superBlocks entry gives the jackknife

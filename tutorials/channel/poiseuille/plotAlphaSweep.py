@@ -10,13 +10,9 @@ import sys
 from dpdfoam.channel import no_wall_reference
 from dpdfoam.checks import write_results
 from dpdfoam.io import body_force, numbered_cases
-from dpdfoam.plots import label, plt, save
-from plotResults import QUANTITIES, SeedRun  # this tutorial's runs, beside this script
+from dpdfoam.poiseuille import QUANTITIES, SeedRun, draw_alpha_sweep
 
 CASES = (("FCC", "fcc", "blockFrozenWallDict"), ("random, mask", "randomMask", "randomEquilWallDict"))
-SHOWN = (("slip", "slip length b"), ("nu", "nu"), ("rhoNear", "density within one cutoff / bulk"),
-         ("kTNear", "kT within one cutoff"), ("returned", "returned per unit time and area"),
-         ("crossed", "found behind the wall per unit time and area"))
 
 
 def main():
@@ -34,15 +30,7 @@ def main():
                   for a, r in zip(alphas, runs)]
     write_results("resultsAlphaSweep.dat", lines)
 
-    fig, ax = plt.subplots(2, 3, figsize=(14, 8))
-    for a, (key, title) in zip(ax.flat, SHOWN):
-        for (wall, (alphas, runs)), marker in zip(sweeps.items(), "os"):
-            a.plot(alphas, [r.q[key] for r in runs], marker + "-", mfc="none", label=wall)
-        a.set_xscale("log")
-        label(a, title, "alpha", legend=8)
-    ax[0, 1].axhline(nu_ref, color="k", lw=0.8)
-    fig.suptitle("Scene 1: the bounce layer's thickness alpha r_c")
-    save(fig, "alphaSweep.png")
+    draw_alpha_sweep(sweeps, nu_ref)
     print("Written alphaSweep.png and resultsAlphaSweep.dat")
     return 0
 

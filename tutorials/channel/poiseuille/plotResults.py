@@ -18,19 +18,14 @@ import sys
 
 import numpy as np
 
-from dpdfoam.channel import no_wall_reference, wall_event_rates
+from dpdfoam.channel import no_wall_reference
 from dpdfoam.checks import Checks, as_number, relative_difference, write_results
-from dpdfoam.io import (body_force, dictionary_value, frozen_wall_counts, function_start, latest_compare, latest_fit,
-                        latest_profile, log_count, numbered_cases)
-from dpdfoam.plots import draw_kT_of_shear, draw_no_slip_poiseuille, label_panels, plt, save
+from dpdfoam.io import body_force, dictionary_value, frozen_wall_counts, latest_compare, log_count
+from dpdfoam.poiseuille import QUANTITIES, plot, seed_runs
 from dpdfoam.published import read_published
 from dpdfoam.snapshots import same_particles
-from dpdfoam.stats import mean_and_error
-from dpdfoam.sweep import (density_flatness, first_bins_density, kT_over_no_wall, near_both_walls, wall_distance,
-                           wall_layer_density, wall_layer_kT)
 
 WALLS = (("FCC", "fcc", "blockFrozenWallDict"), ("random", "randomMask", "randomEquilWallDict"))
-QUANTITIES = ("nu", "slip", "rhoNear", "rhoFirst", "kTNear", "kTBulkVsNoWall", "returned", "crossed")
 # Issue 45, the density's flatness beyond one cutoff of the walls (the largest deviation of a bin from
 # the mean, every seed): first a bin's largest standard error there, relative to the mean, within its
 # budget, then the deviation within 5 %, fixed. Measured: full size (2026-11-27, 200 bins, 400 time units)
@@ -45,34 +40,6 @@ TWIN_BOUND = 0.03
 TWIN_BUDGETS = {False: 0.003, True: 0.01}
 
 
-class SeedRun:
-    """One seed of one wall: its fit, profile and the quantities of QUANTITIES."""
-
-    def __init__(self, path, builder, kT_of_shear, g, nu_ref):
-        self.path = path
-        fit, self.table = latest_fit(path), latest_profile(path)
-        lo, hi = self.walls = tuple(fit["wallPosition"])
-        bulk = wall_distance(self.table["z"], self.walls) > 3.0
-        self.q = {
-            "nu": fit["nu"],
-            "slip": 0.5 * sum(fit["slipLength"]),  # the two walls' mean: their slip is one property
-            "rhoNear": wall_layer_density(self.table, self.walls),
-            "rhoFirst": first_bins_density(self.table, self.walls),
-            "kTNear": wall_layer_kT(self.table, self.walls),  # empty bins read kT 0
-            "kTBulkVsNoWall": kT_over_no_wall(self.table, bulk, 0.5 * (lo + hi), g, nu_ref, kT_of_shear),
-        }
-        self.q["returned"], self.q["crossed"] = wall_event_rates(path, builder, function_start(path, "channelProfile"))
-        self.flatness = density_flatness(self.table, self.walls)
-        self.flatness_error = flatness_error(self.table, self.walls)
-
-
-def flatness_error(prof, walls, cutoff=1.0):
-    """The largest standard error of a bin's density beyond cutoff of the walls, relative to their mean:
-    at most the error of density_flatness's largest deviation."""
-    far = wall_distance(prof["z"], walls) > cutoff
-    return np.max(prof["densityErr"][far]) / np.mean(prof["density"][far])
-
-
 def counts_table(wall, case, builder, published):
     """Built fluid and wall particles (seed 1) beside the paper's and the wall at the paper's depth."""
     log = f"runs/{case}_seed1/log.{builder[:-4]}"
@@ -80,11 +47,6 @@ def counts_table(wall, case, builder, published):
     built, full = frozen_wall_counts(log)
     return (f"{wall:14s} fluid {fluid} (published {fluid_paper}, {100 * (fluid / fluid_paper - 1):+.2f} %)"
             f"  wall at the published depth {full} (published {wall_paper}), built within one cutoff {built}")
-
-
-def seed_runs(case, builder, kT_of_shear, g, nu_ref):
-    runs = [SeedRun(p, builder, kT_of_shear, g, nu_ref) for _, p in numbered_cases(f"runs/{case}_seed", "./Allrun")]
-    return runs, {k: mean_and_error([r.q[k] for r in runs]) for k in QUANTITIES}
 
 
 def nu_check(checks, wall, nu, nu_err, nu_ref, nu_ref_err):
@@ -170,30 +132,6 @@ def main():
     write_results("results.dat", lines, checks)
     plot(results, g, nu_ref, kT_set, kT_of_shear)
     return checks.status()
-
-
-def plot(results, g, nu_ref, kT_set, kT_of_shear):
-    fig, ax = plt.subplots(2, 2, figsize=(13, 9))
-    for (name, (runs, s)), marker in zip(results.items(), "osd"):
-        t = runs[0].table
-        lo, hi = runs[0].walls
-        mean = {k: np.mean([r.table[k] for r in runs], axis=0) for k in ("ux", "density", "kT")}
-        ax[0, 0].plot(t["z"], mean["ux"], marker, ms=2.5, mfc="none",
-                      label=f"{name}: nu {s['nu'][0]:.4f}, b {s['slip'][0]:+.3f} +- {s['slip'][1]:.3f}")
-        ax[0, 1].plot(*near_both_walls(t["z"], mean["density"], (lo, hi), 2.0), marker, ms=3, mfc="none", label=name)
-        ax[1, 0].plot(t["z"], mean["kT"], marker, ms=2.5, mfc="none", label=name)
-        ax[1, 1].errorbar([r.q["slip"] for r in runs], [r.q["nu"] for r in runs], fmt=marker, mfc="none", label=name)
-    draw_no_slip_poiseuille(ax[0, 0], (lo, hi), g, nu_ref, f"no slip, nu {nu_ref:.4f} (no-wall box)", lw=1)
-    ax[1, 0].axhline(kT_set, color="k", lw=0.8)
-    draw_kT_of_shear(ax[1, 0], 0.5 * (lo + hi), kT_of_shear, g, nu_ref, half_width=0.5 * (hi - lo))
-    ax[1, 1].axhline(nu_ref, color="k", lw=0.8, label="nu without walls")
-    ax[1, 1].axvline(0.0, color="gray", lw=0.8)
-    titles = (("velocity (mean over the seeds)", "z", "u_x"), ("density next to the walls", "distance from the wall", "density"),
-              ("kT about the local flow", "z", "kT"), ("each seed's fit", "slip length b", "nu"))
-    label_panels(ax.flat, titles, legend=7)
-    fig.suptitle(f"Scene 1 as published: Poiseuille flow between FCC and random walls with a bounce layer, d = {hi - lo:g}, g = {g:g}")
-    save(fig, "poiseuille.png")
-    print("Written poiseuille.png and results.dat")
 
 
 if __name__ == "__main__":

@@ -18,9 +18,9 @@ import numpy as np
 
 from dpdfoam.channel import near_wall_layer
 from dpdfoam.checks import Checks, as_number, write_results
-from dpdfoam.io import dictionary_number, latest_compare, latest_profile, read_dict, read_sweep, wall_planes
+from dpdfoam.io import dictionary_number, latest_compare, latest_profile, read_dict, read_sweep
 from dpdfoam.slip import asked_slip_measured
-from dpdfoam.plots import label, mark_walls, plt, save
+from dpdfoam.slip_length import central, draw, peak_errors
 
 TEST_MODE = "-test" in sys.argv[1:]
 KT_BOUND = 0.01  # relative
@@ -36,25 +36,12 @@ SAME_ASK_BOUND = 0.1  # two channels asking the same b: Couette against Poiseuil
 TEST_BUDGETS = {"b": 0.4, "same": 0.15}
 
 
-def central(z, case="poiseuille"):
-    """The bins of the channel's middle fifth, between the points the walls were put at."""
-    lo, hi = wall_planes(f"{case}/constant/dpdProperties")
-    return np.abs(z - 0.5 * (lo + hi)) < 0.1 * (hi - lo)
-
-
 def asked_check(checks, where, asked, value, run, calibration):
     bound = 3 * TEST_BUDGETS["b"] if TEST_MODE else max(0.15, 0.1 * asked)
     budget, total = TEST_BUDGETS["b"] if TEST_MODE else bound / 2, math.hypot(as_number(run), as_number(calibration))
     checks.bounded(f"{where}: b measured within {bound:g} of the asked {asked:g} (standard error below {budget:g})",
                    as_number(value) - asked, total, budget, -bound, bound,
                    f"{as_number(value):.3f} +- {total:.3f} (run {as_number(run):.3f}, calibration {as_number(calibration):.3f})")
-
-
-def peak_errors(table, bulk):
-    """The standard errors of near_wall_layer's peak (the densest bin's) and bulk density (the mean over
-    the bins `bulk` selects)."""
-    rho, err = table["density"], table["densityErr"]
-    return float(err[np.argmax(rho)]), float(np.sqrt(np.sum(err[bulk] ** 2)) / np.count_nonzero(bulk))
 
 
 def peak_check(checks, where, peak, peak_err, bulk, bulk_err, budget=PEAK_BUDGETS[TEST_MODE]):
@@ -131,27 +118,6 @@ def main():
     draw(rows, mask_rows, (asked, value, math.hypot(run, calibration)))
     print("Written slipLength.png and results.dat")
     return checks.status()
-
-
-def draw(rows, mask_rows, couette):
-    fig, ax = plt.subplots(1, 3, figsize=(15, 4.5))
-    grid = np.linspace(0, max(max(r[0] for r in rows), 1.0) * 1.1, 50)
-    ax[0].fill_between(grid, grid - np.maximum(0.15, 0.1 * grid), grid + np.maximum(0.15, 0.1 * grid), color="0.85",
-                       label="max(0.15, 10 %) of the ask")
-    ax[0].plot(grid, grid, "k-", lw=0.8)
-    for points, fmt, name in ((rows, "o", "Poiseuille"), (mask_rows, "^", "Poiseuille, image mask"), ([couette], "s", "Couette")):
-        ax[0].errorbar([r[0] for r in points], [r[1] for r in points], [r[2] for r in points], fmt=fmt, label=name)
-    label(ax[0], "asked against measured", "asked b", "measured b (from the wall's point)", 8)
-    for asked_b, _, _, case, _ in rows:
-        t = latest_profile(case)
-        fluid = t["density"] > 0  # bins behind the acting planes hold no fluid and no velocity
-        ax[1].plot(t["z"][fluid], t["ux"][fluid], label=f"b {asked_b:g}")
-        ax[2].plot(t["z"], t["density"] / np.mean(t["density"][central(t["z"])]), label=f"b {asked_b:g}")
-    for a in ax[1:]:
-        mark_walls(a, wall_planes("poiseuille/constant/dpdProperties"))
-    label(ax[1], "Poiseuille profiles", "z", "u_x", 8)
-    label(ax[2], "density over the bulk's", "z", "rho / rho_bulk", 8)
-    save(fig, "slipLength.png")
 
 
 if __name__ == "__main__":

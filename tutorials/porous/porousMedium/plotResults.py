@@ -35,14 +35,11 @@ L2 and the mean-velocity ratio per class of each.
 import os
 import sys
 
-import numpy as np
-
-from dpdfoam.checks import Checks, as_number, finite, write_results
-from dpdfoam.fields import CLASS_COLUMNS, FlowTemperature, TwinBins, class_lines, compare_summary, extent, read_grid
-from dpdfoam.io import (built_particles, finished_solver_log, function_start, latest, latest_compare_lines, read_dict,
-                        read_sections)
+from dpdfoam.checks import write_results
+from dpdfoam.fields import CLASS_COLUMNS, FlowTemperature, TwinBins, class_lines, compare_summary, read_grid
+from dpdfoam.io import built_particles, finished_solver_log, function_start, latest, latest_compare_lines, read_dict
 from dpdfoam.mask import case_regions_on_grid
-from dpdfoam.plots import draw_compare_lines, draw_field, draw_kT_series, draw_sections_twin, draw_twin_fields, label, plt, save
+from dpdfoam.porous import PorousChecks, next_to_grains, plot_comparison, plot_fields
 from dpdfoam.published import read_published
 
 test_mode = "-test" in sys.argv[1:]
@@ -75,98 +72,12 @@ WIDEN = 3.0  # test bounds of a mean: the full bound plus three test budgets, fi
 # = 0.019: 0.180 + 0.058 = 0.24. Measured over the five seeds: 0.150-0.184 (mean 0.170, standard
 # deviation 0.013; noise 0.129-0.141, the line's mean ratio 0.90-0.99), 5 standard deviations below.
 TEST_LINE_BOUND = 0.24
-
-
-def bound(kind, test):
-    """A check's fixed bound: the full scene's, in test mode widened by three test budgets (the crack line:
-    TEST_LINE_BOUND)."""
-    full = {"kT": KT_BOUND, "wall": WALL_BOUND, "twin": WALL_TWIN_BOUND, "line": LINE_BOUND, "mean": MEAN_BOUND}[kind]
-    if not test:
-        return full
-    if kind == "line":
-        return TEST_LINE_BOUND
-    return full + WIDEN * NOISE_BUDGETS[True]["wall" if kind == "twin" else kind]
-
-
-def next_to_grains(bins, near, prof, lines):
-    """Over the bins near the grains: the mean DPD and simpleFoam velocities, the DPD mean's standard
-    error, and the velocity scale, the continuum's peak along the lines (the crack's), with its line."""
-    peaks = {name: np.nanmax(prof["u_" + name]) for name in lines}
-    line = max(peaks, key=peaks.get)
-    return dict(bins.region_means(near), peak=peaks[line], line=line)
-
-
-def kT_check(checks, what, kT, error, test):
-    """The mean kT within the bound of 1, the kT's standard error (the log series') within its budget."""
-    budget, tol = NOISE_BUDGETS[test]["kT"], bound("kT", test)
-    shown = f"{as_number(kT):.4f}" + (f" +- {as_number(error):.4f}" if what != "the bins" else "")
-    return checks.bounded(f"mean kT of {what} within {tol:.3f} of 1 (standard error below {budget:g})", kT, error, budget,
-                          1.0 - tol, 1.0 + tol, shown)
-
-
-def inside_check(checks, inside):
-    """No fluid particle inside the solid at the end (the solver's count): exactly 0; a missing count fails."""
-    return checks.add("no fluid particle inside the solid at the end", inside == 0 and finite(inside), f"{inside}")
-
-
-def wall_checks(checks, u_dpd, u_fvm, error, peak, line, bins, test):
-    """Velocity near zero next to the grains (the mean DPD velocity over the bins the grains' surface
-    passes through, its standard error, the twin's mean there, the crack's peak): below 10 % of the peak,
-    and within 3 % of that peak of simpleFoam's there, each in units of the peak, its standard error first
-    within the budget. In the test's small mask the bins the grains cut hold more of the flow:
-    simpleFoam's own velocity there is ~11 % of the peak (0.0195 of 0.182), so a correct no-slip run would
-    sit at the bound; there the first bound is the larger of 10 % and the continuum's value plus the 3 %
-    of the second check, plus three test budgets like every test bound of a mean; a slipping wall
-    (velocity of the order of the pore's) is still far above it."""
-    u_dpd, u_fvm, error, peak = (as_number(v) for v in (u_dpd, u_fvm, error, peak))
-    peak = peak if peak > 0 else float("nan")  # no flow to scale by: fails
-    budget = NOISE_BUDGETS[test]["wall"]
-    wall_bound = WALL_BOUND
-    if test:
-        wall_bound = max(WALL_BOUND, abs(u_fvm / peak) + WALL_TWIN_BOUND) + WIDEN * budget
-    twin_bound = bound("twin", test)
-    ok = checks.bounded(f"velocity next to the grains < {wall_bound:.1%} of the {line}'s peak (standard error below "
-                        f"{budget:g} of it)", u_dpd / peak, error / peak, budget, -wall_bound, wall_bound,
-                        f"{u_dpd:.4f} (peak {peak:.4f})")
-    return checks.bounded(f"velocity next to the grains within {twin_bound:.1%} of the peak of simpleFoam's there "
-                          f"(standard error below {budget:g} of it)", (u_dpd - u_fvm) / peak, error / peak, budget,
-                          -twin_bound, twin_bound, f"DPD {u_dpd:.4f}, simpleFoam {u_fvm:.4f} over {bins} bins") and ok
-
-
-def line_check(checks, name, l2, noise, points, test):
-    """A line of system/makeFoamCaseDict (the crack's centre line): the relative L2 of DPD against
-    simpleFoam below the bound, its noise L2 (what the DPD errors alone give) first within the budget."""
-    budget, tol = NOISE_BUDGETS[test]["line"], bound("line", test)
-    return checks.bounded(f"{name} centre line: relative L2 < {tol:.3f} (noise L2 below {budget:g})", l2, noise, budget,
-                          None, tol, f"{as_number(l2):.4f} (noise {as_number(noise):.4f}, "
-                          f"{int(as_number(points)) if finite(points) else points} bins)")
-
-
-def mean_check(checks, what, ratio, error, test):
-    """A mean velocity of DPD over simpleFoam's (over the compared bins; the superficial velocity, i.e. the
-    permeability): within the bound of 1, the superficial velocity's relative standard error first within
-    the budget."""
-    budget, tol = NOISE_BUDGETS[test]["mean"], bound("mean", test)
-    return checks.bounded(f"{what} within {tol:.3f} (standard error below {budget:g})", ratio, error, budget, 1.0 - tol,
-                          1.0 + tol, f"{as_number(ratio):.4f} +- {as_number(error):.4f}")
-
-
-def make_checks(cmp, lines, kT, inside, wall, test=None):
-    """The checks (module docstring), from compareFVM's summary and lines, the kT (FlowTemperature), the
-    particles inside the solid and the velocity next to the grains (next_to_grains)."""
-    test = test_mode if test is None else test
-    twin = as_number(cmp["superficialVelocityFVM"])
-    super_err = as_number(cmp["superficialVelocityDPDErr"]) / twin if twin > 0 else float("nan")  # no twin flow: fails
-    checks = Checks()
-    kT_check(checks, "the bins", kT.bins, kT.error, test)
-    kT_check(checks, "the log's series", kT.mean, kT.error, test)
-    inside_check(checks, inside)
-    wall_checks(checks, wall["dpd"], wall["fvm"], wall["se"], wall["peak"], wall["line"], wall["bins"], test)
-    for name, line in lines.items():
-        line_check(checks, name, line["L2"], line["noiseL2"], line["points"], test)
-    mean_check(checks, "mean velocity over the compared bins", cmp["meanVelocityRatio"], super_err, test)
-    mean_check(checks, "superficial velocity (permeability)", cmp["permeabilityRatio"], super_err, test)
-    return checks
+# The checks at these budgets and bounds (dpdfoam.porous.PorousChecks), each also this module's function
+# (tests/apps/checkBoundsPolymerPorous.sh calls them so).
+CHECKS = PorousChecks(NOISE_BUDGETS, {"kT": KT_BOUND, "wall": WALL_BOUND, "twin": WALL_TWIN_BOUND, "line": LINE_BOUND,
+                                      "mean": MEAN_BOUND}, TEST_LINE_BOUND, WIDEN, test_mode)
+bound, kT_check, inside_check, wall_checks = CHECKS.bound, CHECKS.kT_check, CHECKS.inside_check, CHECKS.wall_checks
+line_check, mean_check, make_checks = CHECKS.line_check, CHECKS.mean_check, CHECKS.make_checks
 
 
 def main():
@@ -232,30 +143,6 @@ def main():
     plot_comparison(bins, cmp, lines, prof, twin, l2_interior)
     print("Written porousMedium.png, compareFVM.png and results.dat")
     return checks.status()
-
-
-def plot_fields(bins, kT, inside, directory):
-    fig, ax = plt.subplots(2, 2, figsize=(13, 11))
-    grid, ext = bins.grid, extent(bins.xs, bins.zs)
-    draw_field(fig, ax[0, 0], bins.dpd_speed(), ext, "DPD |u| (flowField.vti)", "|u|")
-    draw_field(fig, ax[0, 1], np.where(grid["count"] > 0, grid["density"], np.nan), ext, "DPD density", "number density",
-               cmap="magma")
-    draw_kT_series(ax[1, 0], kT)
-    label(ax[1, 0], f"kT series; {inside} particles inside the solid at the end", "time", "kT", legend=8)
-    # The sections of system/controlDict (the tutorial's: the crack at its narrowest and widest).
-    draw_sections_twin(ax[1, 1], read_sections(directory, "flowField"), bins.xs, bins.zs, bins.ufx)
-    label(ax[1, 1], "across the flow at the sections of system/controlDict", "z", "ux", legend=8)
-    save(fig, "porousMedium.png")
-
-
-def plot_comparison(bins, cmp, lines, prof, twin, l2_interior):
-    fig, ax = plt.subplots(2, 2, figsize=(13, 11))
-    draw_twin_fields(fig, [ax[0, 0], ax[0, 1], ax[1, 0]], bins.dpd_speed(), bins.twin_speed(), bins.difference(), extent(bins.xs, bins.zs),
-                     f"difference: L2 field {cmp['L2']:.3f}, interior {l2_interior:.3f}")
-    draw_compare_lines(ax[1, 1], prof, lines, twin["nu"])  # each line of system/makeFoamCaseDict
-    label(ax[1, 1], "lines of system/makeFoamCaseDict: " + "; ".join(f"{n} L2 {line['L2']:.4f}" for n, line in lines.items())
-          + f"; k DPD/FVM {cmp['permeabilityRatio']:.3f}", "position along the line", "ux", legend=8)
-    save(fig, "compareFVM.png")
 
 
 if __name__ == "__main__":
