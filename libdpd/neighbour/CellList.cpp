@@ -179,9 +179,11 @@ void CellList::sort(Particles& p, SortForces forces) {
     double* __restrict rz = p.rz.data();
     std::uint32_t* __restrict key = keyOf_.data();
     const Eigen::Vector3d lo = box_.lo, hi = box_.hi;
-    // A block's keys are bounded while they are still in the cache (SortKeyBlocks).
+    // A block's keys are bounded while they are still in the cache (SortKeyBlocks), when several
+    // threads will sort.
     constexpr long kBlock = 8, kKeyBlock = SortKeyBlocks::kBlock;
     keyBlocks_.resize(static_cast<std::uint32_t>(n));
+    const bool boundBlocks = omp_get_max_threads() > 1;
 #pragma omp parallel for schedule(static)
     for (long s = 0; s < n; s += kKeyBlock) {
         const long sEnd = std::min(s + kKeyBlock, n);
@@ -194,8 +196,9 @@ void CellList::sort(Particles& p, SortForces forces) {
             if (split)
                 for (long i = b; i < e; ++i) key[i] += isFrozenSpecies(p.species[i]) ? 1u : 0u;
         }
-        keyBlocks_.record(static_cast<std::uint32_t>(s), key + s, static_cast<std::uint32_t>(sEnd - s));
+        if (boundBlocks) keyBlocks_.record(static_cast<std::uint32_t>(s), key + s, static_cast<std::uint32_t>(sEnd - s));
     }
+    if (!boundBlocks) keyBlocks_.coverEveryKey();
     const std::uint32_t discardKey = 2 * static_cast<std::uint32_t>(numCells());
     for (const std::uint32_t i : discarded_) {
         key[i] = discardKey;

@@ -34,6 +34,12 @@ public:
         least_[first / kBlock] = lo;
         greatest_[first / kBlock] = hi;
     }
+    // Every block may hold any key: for a sort on one thread, which reads every key anyway and so
+    // need not pay for the bounds.
+    void coverEveryKey() {
+        std::fill(least_.begin(), least_.end(), 0u);
+        std::fill(greatest_.begin(), greatest_.end(), ~0u);
+    }
     // Particle i's key was changed to k after its block was recorded.
     void widen(std::uint32_t i, std::uint32_t k) {
         least_[i / kBlock] = std::min(least_[i / kBlock], k);

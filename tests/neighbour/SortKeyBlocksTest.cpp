@@ -110,4 +110,18 @@ TEST(SortKeyBlocks, ABlockIsSkippedOnlyWhenItHoldsNoKeyOfTheRange) {
     EXPECT_EQ(count(0, 10), 0u);                            // below
 }
 
+TEST(SortKeyBlocks, CoveringEveryKeyVisitsWhatAPlainScanVisits) {
+    // The one-thread sort records no bounds: every block is read, stale bounds or none.
+    const std::uint32_t n = 3 * SortKeyBlocks::kBlock + 5, nKeys = 400;
+    std::vector<std::uint32_t> key = nearlySortedKeys(n, nKeys, 7);
+    SortKeyBlocks blocks = blocksOf(std::vector<std::uint32_t>(n, 0));  // bounds of other keys
+    blocks.coverEveryKey();
+    for (const auto& [kBegin, width] : std::vector<std::pair<std::uint32_t, std::uint32_t>>{{0, nKeys}, {399, 1}, {150, 20}}) {
+        std::vector<std::uint32_t> found;
+        blocks.forEachKeyIn(key.data(), 0, n, kBegin, width, [&](std::uint32_t i) { found.push_back(i); });
+        EXPECT_EQ(found, plainScan(key, 0, n, kBegin, width)) << "keys " << kBegin << " + " << width;
+        EXPECT_FALSE(found.empty());
+    }
+}
+
 }  // namespace dpd
