@@ -35,8 +35,9 @@ Modules:
                 profiles), a profile near its walls, channels compared with long-block errors
     stepstudy   a study of the time step per integrator: cost model, where an error passes a level,
                 blow-ups, the largest step that keeps a property, equal accuracy, the pictures
-    stepruns    a step study made of whole runs (tutorials/benchmarks/walledStep): each run's nu, slip length,
-                kT next to the walls and cost read from its case, the largest step that keeps them
+    stepruns    a step study made of whole runs (tutorials/benchmarks/walledStep): its dictionary, each run's nu,
+                slip length, kT next to the walls and cost read from its case, the largest step that keeps
+                them, the runs' tables and the picture
     lattice_wall  the lattice-wall Poiseuille channel (tutorials/channel/poiseuille/latticeWall): its measures
                 against the fluid without walls, lattice and random walls compared with long-block errors
                 (no slip, nu, the pairs' agreement), the simpleFoam twin against the analytic parabola

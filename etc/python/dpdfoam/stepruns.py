@@ -1,13 +1,21 @@
 """A time-step study of cases run as one copy per integrator and step (<runs>/<scene>-<integrator>-dt<step>/,
-tutorials/benchmarks/walledStep): what each copy measured and what it cost, the differences from the
-smallest step, and the largest step that keeps them within tolerances. The rows are dicts in
-dpdfoam.stepstudy's form ("dt", "unstable", a quantity's difference q and its standard error q + "se",
-"cost" in seconds per particle per time unit), so its cost model and largest_step apply.
+tutorials/benchmarks/walledStep): the study's dictionary, what each copy measured and what it cost, the
+differences from the smallest step, the largest step that keeps them within tolerances, the tables and
+the picture. The rows are dicts in dpdfoam.stepstudy's form ("dt", "unstable", a quantity's difference q
+and its standard error q + "se", "cost" in seconds per particle per time unit), so its cost model and
+largest_step apply.
+
+    study = read_study("system/walledStepDict")               # scenes, integrators, steps, tolerances
+    rows, costs = read_runs("runs", study.scenes, study.integrators, study.tol)  # {scene: {integrator: rows}}
+    lines = study_lines("walledStep", False, study.tol, rows, costs)    # the runs' tables, the largest steps
+    draw_study(rows, "walledStep.png", "title")                         # per scene four panels
+
+or step by step:
 
     rows = scene_rows("runs", "latticeWall", ["GrootWarren0.65", "DPDVV"])  # {integrator: [row by dt]}
     for points in rows.values():
         against_smallest(points, Tolerances(0.02, 0.05, 3, 0.01))          # differences and verdicts
-    best = largest_step(points, keeps)                                   # stepstudy.largest_step
+    best, why, unstable, speed_up = largest_keeping(points)              # stepstudy.largest_step with keeps
 
 A copy holds its solver log (log.dpdFoamLike: stopped by the run's monitor or finished, the steps, the
 threads and particles), its CPU time (log.cpuTime, "dpdFoamLike cpuSeconds <user> <system> wallSeconds
@@ -15,26 +23,48 @@ threads and particles), its CPU time (log.cpuTime, "dpdFoamLike cpuSeconds <user
 threads), fitSlipLength's latest fit.dat (nu, the slip length at each wall, their errors, the walls'
 positions) and the profile's sampled blocks (<time>/sampling/<profile>.h5), from which kT within a
 cutoff of each wall is taken with its error over ten groups of consecutive blocks.
+
+Cost: CPU seconds (user + system, log.cpuTime) per particle-step of the mobile particles; each
+integrator's median over its stable runs of the scene (dpdfoam.stepstudy.apply_cost_model: a step costs
+the same at any dt, so one run slowed by other jobs moves nothing) divided by dt gives the cost of one
+time unit per particle. The runs' table keeps each run's own cost per particle-step too.
 """
 import glob
 import math
 import os
 import re
+import subprocess
 from collections import namedtuple
 
 from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
 
 from .blocks import SampledBins, region_temperature
-from .io import dictionary_number, latest_fit, read_text, run_finished
-from .plots import plt
+from .io import dictionary_number, dictionary_value, latest_fit, read_text, run_finished
+from .plots import label as label_axes, plt, save
 from .snapshots import snapshot_box
 from .stats import BlockMean
+from .stepstudy import apply_cost_model, first_unstable, largest_step
 
 # What a step must keep against the smallest step: nu within nu (relative), the slip length within the
 # larger of b (in cutoffs) and bErrors combined standard errors, kT next to the walls within kT (relative).
 Tolerances = namedtuple("Tolerances", "nu b bErrors kT")
+# A study's dictionary: the scenes (case directories), the integrators' labels, the steps, the tolerances.
+Study = namedtuple("Study", "scenes integrators steps tol")
 QUANTITIES = ("nu", "b", "kTwall")
+NAMES = {"nu": "nu", "b": "b", "kTwall": "kT next to the walls"}
 NAN = float("nan")
+
+
+def read_study(path):
+    """A study's dictionary (tutorials/benchmarks/walledStep/system/walledStepDict): `scenes` and `deltaT`
+    (lists), the `integrators` sub-dictionaries' names, nuTolerance, bTolerance, bErrors, kTTolerance."""
+    scenes = dictionary_value(path, "scenes").strip("()").split()
+    steps = [float(w) for w in dictionary_value(path, "deltaT").strip("()").split()]
+    text = subprocess.run(["dpdDictionary", path, "-entry", "integrators", "-value"], check=True, capture_output=True,
+                          text=True).stdout
+    labels = re.findall(r"^    ([^ {};]+)$", text, re.M)  # dpdDictionary prints the names four spaces in
+    tol = Tolerances(*(float(dictionary_value(path, k)) for k in ("nuTolerance", "bTolerance", "bErrors", "kTTolerance")))
+    return Study(scenes, labels, steps, tol)
 
 
 def solver_run(case):
@@ -137,6 +167,23 @@ def scene_rows(directory, scene, integrators, profile="channelProfile"):
     return out
 
 
+def read_runs(directory, scenes, integrators, tol, profile="channelProfile"):
+    """Every scene's copies (scene_rows) with the differences from each integrator's smallest step
+    (against_smallest) and the cost model applied (stepstudy.apply_cost_model): ({scene: {integrator:
+    rows}}, {scene: {integrator: (median, lowest, highest) CPU seconds per particle-step}}); a scene
+    without copies is left out of both."""
+    rows, costs = {}, {}
+    for scene in scenes:
+        r = scene_rows(directory, scene, integrators, profile)
+        if not r:
+            continue
+        for points in r.values():
+            against_smallest(points, tol)
+        costs[scene] = apply_cost_model(r)
+        rows[scene] = r
+    return rows, costs
+
+
 def measured_all(p):
     """Whether the run is stable and nu, the slip length and kT next to the walls are numbers."""
     return not p["unstable"] and all(math.isfinite(p[q + "Value"]) for q in QUANTITIES)
@@ -183,6 +230,21 @@ def limiting_step(points):
     return next((p for p in points if not keeps(p)), None)
 
 
+def largest_keeping(points):
+    """The largest measured step up to which every step keeps the reference (stepstudy.largest_step with
+    keeps; None when the smallest does not), why the next larger step does not ("-" when it is not
+    measured, "unstable at <dt>" when the monitor stopped it, else the quantities it failed "nu,kTwall at
+    <dt>"), the first step the monitor stopped (None) and the speed-up: the reference's cost of a time
+    unit over the largest step's (NaN without one)."""
+    p = largest_step(points, keeps)
+    nxt = limiting_step(points)
+    why = "-" if nxt is None else (f"unstable at {nxt['dt']:g}" if nxt["unstable"] else
+                                   f"{','.join(nxt['limits'])} at {nxt['dt']:g}")
+    ref = next((q for q in points if q.get("reference")), None)
+    speed = ref["cost"] / p["cost"] if p and ref and math.isfinite(p["cost"]) else NAN
+    return p, why, first_unstable(points), speed
+
+
 def scene_text(case):
     """A copy's scene in words, from its solver log and its snapshot 0/: the particles, the box, the
     walls and the body force."""
@@ -204,6 +266,106 @@ def scene_text(case):
     if m:
         lines.append("body force " + m.group(1))
     return lines
+
+
+# ---- Tables --------------------------------------------------------------------------------------------
+
+def pm(value, error, digits=4, sign=""):
+    """'value+-error' with digits decimals; '-' for a value that is not a number."""
+    if not math.isfinite(value):
+        return "-"
+    return f"{value:{sign}.{digits}f}+-{error:.{digits}f}"
+
+
+def difference(p, q, percent):
+    """A row's difference from the reference with its error (in % when percent); 'ref', or '-' when
+    unstable or not measured."""
+    if p["unstable"] or not math.isfinite(p[q]):
+        return "-"
+    if p.get("reference"):
+        return "ref"
+    scale = 100.0 if percent else 1.0
+    return f"{scale * p[q]:+.2f}+-{scale * p[q + 'se']:.2f}" if percent else f"{p[q]:+.3f}+-{p[q + 'se']:.3f}"
+
+
+def fmt(x, spec=".3g"):
+    """x formatted; '-' for None or a float that is not finite."""
+    return "-" if x is None or (isinstance(x, float) and not math.isfinite(x)) else format(x, spec)
+
+
+def verdict(p):
+    """A row's verdict: 'ref', 'yes', 'no' (unstable) or 'no: ' and the quantities it failed."""
+    if p.get("reference"):
+        return "ref"
+    if keeps(p):
+        return "yes"
+    return "no" if p["unstable"] else "no: " + ",".join(p["limits"])
+
+
+def scene_lines(scene, r, costs):
+    """A scene's table: the scene in words, every run's values, differences, tolerance of b, costs and
+    verdict, then each integrator's cost per particle-step (costs: apply_cost_model's)."""
+    any_run = next(iter(r.values()))[0]
+    lines = ["#", f"# Scene {scene}: " + "; ".join(scene_text(any_run["case"])),
+             f"# endTime {any_run['endTime']:g} at every step; fitSlipLength's errors: " +
+             ", ".join(sorted({p['errors'] for pts in r.values() for p in pts if p['errors']})),
+             "# integrator      dt     run              nu                 b (mean of walls)   kT next to walls    "
+             "dnu(%)       db             tol(b)  dkT(%)       CPU s/p-step  CPU s/p/time unit  keeps"]
+    for label, points in r.items():
+        for p in points:
+            run = f"stopped at {p['stoppedAt']:g}" if p["unstable"] else f"{p['steps']} steps"
+            lines.append(f"{label:<16} {p['dt']:<6g} {run:<16} {pm(p['nuValue'], p['nuValueSe']):<18} "
+                         f"{pm(p['bValue'], p['bValueSe'], 3, '+'):<19} {pm(p['kTwallValue'], p['kTwallValueSe']):<19} "
+                         f"{difference(p, 'nu', True):<12} {difference(p, 'b', False):<14} {fmt(p.get('bTol')):<7} "
+                         f"{difference(p, 'kTwall', True):<12} {fmt(p['stepCost']):<13} {fmt(p['cost']):<18} "
+                         f"{verdict(p)}")
+    lines += ["# Cost per particle-step (CPU seconds; median, lowest and highest over the stable runs)"]
+    lines += [f"#   {label:<16} {median:.3g} ({low:.3g} to {high:.3g})" for label, (median, low, high) in costs.items()]
+    return lines
+
+
+def largest_lines(rows):
+    """Per scene and integrator the largest step (largest_keeping), what limits it, the first unstable
+    step, the cost of a time unit there and the speed-up; per scene the cheapest time unit."""
+    lines = ["#", "# Largest step: the largest measured step up to which every step keeps nu within the tolerance,",
+             "# b within max(tolerance x cutoff, bErrors combined SE) and kT next to the walls within the tolerance of",
+             "# the same integrator's smallest step ('-' when the next step is not measured); limitedBy: what the",
+             "# next larger step failed (unstable: stopped by the monitor); cost of a time unit at the largest step",
+             "# (CPU s per particle, the median step cost / dt) and the speed-up against the smallest step.",
+             "# scene           integrator       largestDt  limitedBy             firstUnstable  CPU s/p/time unit  speedUp"]
+    for scene, r in rows.items():
+        best = None
+        for label, points in r.items():
+            p, why, u, speed = largest_keeping(points)
+            lines.append(f"{scene:<17} {label:<16} {fmt(p and p['dt'], 'g'):<10} {why:<21} {fmt(u, 'g'):<14} "
+                         f"{fmt(p['cost'] if p else None):<18} {fmt(speed, '.2f')}")
+            if p and math.isfinite(p["cost"]) and (best is None or p["cost"] < best[2]):
+                best = (label, p["dt"], p["cost"])
+        if best:
+            lines.append(f"# {scene}: cheapest time unit within the tolerances: {best[0]} at dt {best[1]:g}, "
+                         f"{best[2]:.3g} CPU s per particle")
+    return lines
+
+
+def study_lines(name, test_mode, tol, rows, costs):
+    """results.dat's tables: the study's header (name, mode, tolerances), each scene's table
+    (scene_lines), the largest steps (largest_lines)."""
+    lines = [f"# {name} ({'test mode' if test_mode else 'full study'}): each run the same physical time; against "
+             "the same integrator's smallest step: nu within "
+             f"{100 * tol.nu:g} %, b within max({tol.b:g} r_c, {tol.bErrors:g} combined SE), kT within one cutoff of "
+             f"the walls within {100 * tol.kT:g} %",
+             "# (values +- standard errors; differences relative in %, b in length units; CPU s: user + system of the "
+             "solver)"]
+    for scene, r in rows.items():
+        lines += scene_lines(scene, r, costs[scene])
+    return lines + largest_lines(rows)
+
+
+def write_whole(path, text):
+    """text to path through path.tmp, replaced whole: a reader never sees half a table."""
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
 
 
 # ---- Pictures ------------------------------------------------------------------------------------------
@@ -287,3 +449,25 @@ def draw_scaled_errors_against_cost(ax, rows, names=None):
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel("cost: CPU microseconds per particle per time unit")
     ax.set_ylabel("|difference from the smallest step| / tolerance")
+
+
+def draw_study(rows, path, title):
+    """The study's picture: per scene nu, b and kT next to the walls against dt (the tolerance bands of
+    nu and kT dotted) and each difference over its tolerance against the cost; saved to path."""
+    n = len(rows)
+    fig, axes = plt.subplots(n, 4, figsize=(20, 4.3 * n), squeeze=False)
+    for (scene, r), ax in zip(rows.items(), axes):
+        draw_against_dt(ax[0], r, "nu")
+        draw_tolerance_band(ax[0], r, "nu", relative=True)
+        label_axes(ax[0], f"{scene}: nu (fitSlipLength)", None, "nu", legend=7)
+        draw_against_dt(ax[1], r, "b")
+        label_axes(ax[1], f"{scene}: slip length (mean of the walls)", None, "b", legend=7)
+        draw_against_dt(ax[2], r, "kTwall")
+        draw_tolerance_band(ax[2], r, "kTwall", relative=True)
+        label_axes(ax[2], f"{scene}: kT within a cutoff of the walls", None, "kT", legend=7)
+        draw_scaled_errors_against_cost(ax[3], r, NAMES)
+        ax[3].set_title(f"{scene}: difference / tolerance against cost (labels: dt)", fontsize=10)
+        if ax[3].get_legend_handles_labels()[0]:
+            ax[3].legend(fontsize=6)
+    fig.suptitle(title, fontsize=11)
+    save(fig, path, dpi=100)
