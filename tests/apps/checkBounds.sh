@@ -20,61 +20,19 @@ python=/usr/bin/python3
 # Required dependencies (the tutorials' scripts import them): a missing one fails the test (no skip).
 requirePython "$python" numpy matplotlib || finishTests checkBounds
 
-out=$(PYTHONPATH="$src/etc/python" "$python" - "$src" 2>&1 <<'EOF'
-import importlib.util
+out=$(PYTHONPATH="$src/tests/apps:$src/etc/python" PYTHONDONTWRITEBYTECODE=1 "$python" - "$src" 2>&1 <<'EOF'
 import sys
 import types
 
-from dpdfoam.checks import Checks
+from boundcheck import NAN, broken, expect, print_summary, tutorial_loader
 from dpdfoam.slip import reference_check, same_at_rest_check, turn_check, zero_flux_check
 
-src, NAN = sys.argv[1], float("nan")
-
-
-def load(name, case, script="plotResults.py", group="channel"):
-    """A tutorial's script (plotResults.py unless said) as module `name`, its directory on sys.path
-    while it loads (the lattice-wall script imports wallComparison beside it)."""
-    directory = f"{src}/tutorials/{group}/{case}"
-    sys.path.insert(0, directory)
-    try:
-        spec = importlib.util.spec_from_file_location(name, f"{directory}/{script}")
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-    finally:
-        sys.path.remove(directory)
-    return module
-
-
+load = tutorial_loader(sys.argv[1], "channel")
 sw, sg, lw = load("stripedWall", "stripedWall"), load("slipGammaFw", "slipGammaFw"), load("latticeWall", "poiseuille/latticeWall")
 ts = load("tunableSlip", "tunableSlip")
 sc = load("stripedCalibration", "stripedWall", "calibrate.py")
 sa = load("speedAccuracy", "speedAccuracy", group="benchmarks")
 wc = sys.modules["wallComparison"]
-wrong = 0
-
-
-def expect(what, passes, add):
-    """add(checks) adds one check or several: all must pass, or (passes False) one at least must fail."""
-    global wrong
-    checks = Checks()
-    add(checks)
-    passed = bool(checks.rows) and not checks.failures()
-    ok = passed == passes
-    wrong += not ok
-    print(f"{'ok   ' if ok else 'WRONG'} {'pass' if passes else 'fail'}  {what}" +
-          ("" if ok else "   <- " + " | ".join(checks.lines())))
-
-
-def broken(what, add, good, bound_value, noisy):
-    """good: arguments that pass; each broken variant fails: NaN, empty, missing value, the error over
-    the budget, the value just outside the bound."""
-    expect(f"{what}: good", True, lambda c: add(c, *good))
-    for name, value in (("NaN", NAN), ("empty", ""), ("missing", None)):
-        expect(f"{what}: value {name}", False, lambda c: add(c, value, *good[1:]))
-    expect(f"{what}: error NaN", False, lambda c: add(c, good[0], NAN, *good[2:]))
-    expect(f"{what}: error missing", False, lambda c: add(c, good[0], None, *good[2:]))
-    expect(f"{what}: error over its budget", False, lambda c: add(c, good[0], noisy, *good[2:]))
-    expect(f"{what}: just outside the bound", False, lambda c: add(c, bound_value, *good[1:]))
 
 
 # stripedWall (its plotResults.py's budgets, BOUND and linear; the checks it runs from dpdfoam.slip).
@@ -354,7 +312,7 @@ expect("contraction test: a section's error over its budget", False,
        flow(TEST[0], [0.241, 0.229, 0.135, 0.5, 0.231], kT=1.004, kT_error=0.0006, test=True))
 expect("contraction a particle inside the solid", False, flow(*FULL, inside=1))
 expect("contraction no flow", False, flow([-0.01] * 5, [0.001] * 5))
-print(f"{wrong} wrong")
+print_summary()
 EOF
 )
 echo "$out"

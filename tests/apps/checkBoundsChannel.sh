@@ -17,56 +17,14 @@ python=/usr/bin/python3
 # Required dependencies (the tutorials' scripts import them): a missing one fails the test (no skip).
 requirePython "$python" numpy matplotlib h5py || finishTests checkBoundsChannel
 
-out=$(PYTHONPATH="$src/etc/python" MPLBACKEND=Agg "$python" - "$src" 2>&1 <<'EOF'
-import importlib.util
+out=$(PYTHONPATH="$src/tests/apps:$src/etc/python" PYTHONDONTWRITEBYTECODE=1 MPLBACKEND=Agg "$python" - "$src" 2>&1 <<'EOF'
 import sys
 
-from dpdfoam.checks import Checks
+from boundcheck import NAN, broken, expect, print_summary, tutorial_loader
 
-src, NAN = sys.argv[1], float("nan")
-
-
-def load(name, case, script="plotResults.py", group="channel"):
-    """A tutorial's script (plotResults.py unless said) as module `name`, its directory on sys.path
-    while it loads."""
-    directory = f"{src}/tutorials/{group}/{case}"
-    sys.path.insert(0, directory)
-    try:
-        spec = importlib.util.spec_from_file_location(name, f"{directory}/{script}")
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-    finally:
-        sys.path.remove(directory)
-    return module
-
-
+load = tutorial_loader(sys.argv[1], "channel")
 cs, pz = load("couetteSlip", "couetteSlip"), load("poiseuilleScene1", "poiseuille")
 ss, sl = load("slipSensitivity", "slipSensitivity"), load("slipLength", "slipLength")
-wrong = 0
-
-
-def expect(what, passes, add):
-    """add(checks) adds one check or several: all must pass, or (passes False) one at least must fail."""
-    global wrong
-    checks = Checks()
-    add(checks)
-    passed = bool(checks.rows) and not checks.failures()
-    ok = passed == passes
-    wrong += not ok
-    print(f"{'ok   ' if ok else 'WRONG'} {'pass' if passes else 'fail'}  {what}" +
-          ("" if ok else "   <- " + " | ".join(checks.lines())))
-
-
-def broken(what, add, good, bound_value, noisy):
-    """good: arguments that pass; each broken variant fails: NaN, empty, missing value, the error over
-    the budget, the value just outside the bound."""
-    expect(f"{what}: good", True, lambda c: add(c, *good))
-    for name, value in (("NaN", NAN), ("empty", ""), ("missing", None)):
-        expect(f"{what}: value {name}", False, lambda c: add(c, value, *good[1:]))
-    expect(f"{what}: error NaN", False, lambda c: add(c, good[0], NAN, *good[2:]))
-    expect(f"{what}: error missing", False, lambda c: add(c, good[0], None, *good[2:]))
-    expect(f"{what}: error over its budget", False, lambda c: add(c, good[0], noisy, *good[2:]))
-    expect(f"{what}: just outside the bound", False, lambda c: add(c, bound_value, *good[1:]))
 
 
 # ---- couetteSlip ------------------------------------------------------------------------------------
@@ -237,7 +195,7 @@ expect("slipLength density peak: bulk's error NaN", False, lambda c: peak(c, 3.3
 expect("slipLength density peak: the bulk halved", False, lambda c: peak(c, 3.305, 0.0034, 1.508, 0.0011, SB))
 expect("slipLength density peak: 1.15 +- 0.03 (passed the old rule, no budget)", False,
        lambda c: peak(c, 3.468, 0.09, 3.0155, 0.0011, sl.PEAK_BUDGETS[True]))
-print(f"{wrong} wrong")
+print_summary()
 EOF
 )
 echo "$out"

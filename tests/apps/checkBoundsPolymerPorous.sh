@@ -19,62 +19,22 @@ python=/usr/bin/python3
 # Required dependencies (the tutorials' scripts import them): a missing one fails the test (no skip).
 requirePython "$python" numpy matplotlib || finishTests checkBoundsPolymerPorous
 
-out=$(PYTHONPATH="$src/etc/python" MPLBACKEND=Agg "$python" - "$src" 2>&1 <<'EOF'
-import importlib.util
+out=$(PYTHONPATH="$src/tests/apps:$src/etc/python" PYTHONDONTWRITEBYTECODE=1 MPLBACKEND=Agg "$python" - "$src" 2>&1 <<'EOF'
+import functools
 import math
 import sys
 import types
 
-from dpdfoam.checks import Checks, as_number
+import boundcheck
+from boundcheck import NAN, expect, print_summary, tutorial_loader
+from dpdfoam.checks import as_number
 from dpdfoam.stats import Z_SIGMA, combined, student_t
 
-src, NAN = sys.argv[1], float("nan")
-
-
-def load(name, group, case, script="plotResults.py"):
-    """A tutorial's script as module `name`, its directory on sys.path while it loads."""
-    directory = f"{src}/tutorials/{group}/{case}"
-    sys.path.insert(0, directory)
-    try:
-        spec = importlib.util.spec_from_file_location(name, f"{directory}/{script}")
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-    finally:
-        sys.path.remove(directory)
-    return module
-
-
-pc, ps = load("polymerChannel", "polymer", "channel"), load("polymerScaling", "polymer", "scaling")
-pm = load("porousMedium", "porous", "porousMedium")
-wrong = 0
-
-
-def expect(what, passes, add):
-    """add(checks) adds one check or several: all must pass, or (passes False) one at least must fail."""
-    global wrong
-    checks, raised = Checks(), None
-    try:
-        add(checks)
-    except Exception as e:  # a check must decide, not raise (the script would stop without its table)
-        raised = f"raised {type(e).__name__}: {e}"
-        checks.add(raised, False)
-    passed = bool(checks.rows) and not checks.failures()
-    ok = passed == passes and raised is None
-    wrong += not ok
-    print(f"{'ok   ' if ok else 'WRONG'} {'pass' if passes else 'fail'}  {what}" +
-          ("" if ok else "   <- " + " | ".join(checks.lines())))
-
-
-def broken(what, add, good, bound_value, noisy):
-    """good: arguments that pass; each broken variant fails: NaN, empty, missing value, the error NaN,
-    missing or over the budget, the value just outside the bound."""
-    expect(f"{what}: good", True, lambda c: add(c, *good))
-    for name, value in (("NaN", NAN), ("inf", math.inf), ("empty", ""), ("missing", None)):
-        expect(f"{what}: value {name}", False, lambda c: add(c, value, *good[1:]))
-    expect(f"{what}: error NaN", False, lambda c: add(c, good[0], NAN, *good[2:]))
-    expect(f"{what}: error missing", False, lambda c: add(c, good[0], None, *good[2:]))
-    expect(f"{what}: error over its budget", False, lambda c: add(c, good[0], noisy, *good[2:]))
-    expect(f"{what}: just outside the bound", False, lambda c: add(c, bound_value, *good[1:]))
+load = tutorial_loader(sys.argv[1], "polymer")
+pc, ps = load("polymerChannel", "channel"), load("polymerScaling", "scaling")
+pm = load("porousMedium", "porousMedium", group="porous")
+# Here a value of inf is broken too: broken feeds NaN, inf, empty and missing values.
+broken = functools.partial(boundcheck.broken, inf=True)
 
 
 # --- polymer/scaling. exponent_check(checks, nu, error, test). Full size (README 2026-11-24, chainScaling:
@@ -283,7 +243,7 @@ expect("porous make_checks full size at the test's bounds", True, summary(True, 
 for key, value in (("kTlog", NAN), ("inside", None), ("se", NAN), ("L2", None), ("perm", ""), ("sup", NAN), ("supFVM", 0.0),
                    ("noise", 0.2), ("mean", 0.5)):
     expect(f"porous make_checks test: {key} {value!r}", False, summary(True, **{key: value}))
-print(f"{wrong} wrong")
+print_summary()
 EOF
 )
 echo "$out"

@@ -18,47 +18,15 @@ python=/usr/bin/python3
 # Required dependencies (the tutorial's script imports them): a missing one fails the test (no skip).
 requirePython "$python" numpy matplotlib h5py || finishTests checkBoundsWalledStep
 
-out=$(PYTHONPATH="$src/etc/python" MPLBACKEND=Agg "$python" - "$src" 2>&1 <<'EOF'
+out=$(PYTHONPATH="$src/tests/apps:$src/etc/python" PYTHONDONTWRITEBYTECODE=1 MPLBACKEND=Agg "$python" - "$src" 2>&1 <<'EOF'
 import copy
-import importlib.util
 import math
 import sys
 
-from dpdfoam.checks import Checks
+from boundcheck import INF, NAN, expect, print_summary, tutorial_loader
 from dpdfoam.stepruns import Study, Tolerances
 
-src, NAN, INF = sys.argv[1], float("nan"), float("inf")
-
-
-def load(name, case, script="plotResults.py", group="benchmarks"):
-    """A tutorial's script (plotResults.py unless said) as module `name`, its directory on sys.path
-    while it loads."""
-    directory = f"{src}/tutorials/{group}/{case}"
-    sys.path.insert(0, directory)
-    try:
-        spec = importlib.util.spec_from_file_location(name, f"{directory}/{script}")
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-    finally:
-        sys.path.remove(directory)
-    return module
-
-
-ws = load("walledStep", "walledStep")
-ok_count, wrong = 0, 0
-
-
-def expect(what, passes, add):
-    """add(checks) adds one check or several: all must pass, or (passes False) one at least must fail."""
-    global ok_count, wrong
-    checks = Checks()
-    add(checks)
-    passed = bool(checks.rows) and not checks.failures()
-    ok = passed == passes
-    ok_count += ok
-    wrong += not ok
-    print(f"{'ok   ' if ok else 'WRONG'} {'pass' if passes else 'fail'}  {what}" +
-          ("" if ok else "   <- " + " | ".join(checks.lines())))
+ws = tutorial_loader(sys.argv[1], "benchmarks")("walledStep", "walledStep")
 
 
 def broken(what, add, good, noisy, quiet, outside, inside):
@@ -267,7 +235,7 @@ rows = rows_of(True, STEPS[True])
 kept = copy.deepcopy(rows)
 ws.checks(rows, True, study(True))
 expect("walledStep: checks() leave the rows as they were", True, lambda c: c.add("rows unchanged", rows == kept))
-print(f"{ok_count} ok, {wrong} wrong")
+print_summary(count_ok=True)
 EOF
 )
 echo "$out"
