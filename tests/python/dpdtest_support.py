@@ -8,6 +8,8 @@ import contextlib
 import os
 import stat
 import sys
+import tempfile
+import unittest
 from unittest import mock
 
 import numpy as np
@@ -177,3 +179,16 @@ def working_directory(path):
         yield path
     finally:
         os.chdir(old)
+
+
+# A test case with a temporary directory of its own, removed after each test.
+class Temporary(unittest.TestCase):
+    def setUp(self):
+        self._tmp = tempfile.TemporaryDirectory()
+        self.tmp = self._tmp.name
+
+    def tearDown(self):
+        self._tmp.cleanup()
+
+    def path(self, *parts):
+        return os.path.join(self.tmp, *parts)

@@ -16,13 +16,12 @@ import math
 import os
 import subprocess
 import sys
-import tempfile
 import unittest
 
 import numpy as np
 
 from dpdfoam import io as dio
-from dpdtest_support import dictionary_text, fake_dictionary, write_table, write_text
+from dpdtest_support import dictionary_text, fake_dictionary, Temporary, write_table, write_text
 
 BANNER = ("/*--------------------------------*- C++ -*----------------------------------*\\\n"
           "  Written by the dpd toolkit\n"
@@ -40,18 +39,6 @@ def report(time, step, kT, walls=None, inside=0, bonds=None):
     if bonds is not None:
         text += f"    bonds: longest {bonds[0]} of rMax {bonds[1]}\n"
     return text + "    ExecutionTime = 1.5 s   steps/s = 100   particle-steps/s = 1e+06   time left = 1 s\n\n"
-
-
-class Temporary(unittest.TestCase):
-    def setUp(self):
-        self._tmp = tempfile.TemporaryDirectory()
-        self.tmp = self._tmp.name
-
-    def tearDown(self):
-        self._tmp.cleanup()
-
-    def path(self, *parts):
-        return os.path.join(self.tmp, *parts)
 
 
 class LatestTimes(Temporary):

@@ -15,7 +15,6 @@ mass-weighted velocity and the planted 20 % excess downstream over the gas secto
 """
 import math
 import os
-import tempfile
 import unittest
 
 import numpy as np
@@ -26,7 +25,7 @@ from dpdfoam.slip import (StripedReference, anisotropy_check, asked_slip_measure
                           no_slip_friction, principal_slip_checks, read_calibration_runs, read_slip_tensor, reference_check,
                           run_force, run_value, same_at_rest_check, slip_choices, slip_not_rising_checks, stiff_end,
                           striped_slip, turn_check, zero_flux_check)
-from dpdtest_support import dictionary_text, fake_tool, write_fit, write_table, write_text
+from dpdtest_support import dictionary_text, fake_tool, Temporary, write_fit, write_table, write_text
 
 NAN = float("nan")
 
@@ -78,15 +77,6 @@ def par(b, r, height=20.0, f=0.5):
 
 def perp(b, r, height=20.0):
     return 0.25 * (b - r) + 0.01 * (height + 2 * r) + r
-
-
-class Temporary(unittest.TestCase):
-    def setUp(self):
-        self._tmp = tempfile.TemporaryDirectory()
-        self.tmp = self._tmp.name
-
-    def tearDown(self):
-        self._tmp.cleanup()
 
 
 class Calibration(Temporary):

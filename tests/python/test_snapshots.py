@@ -13,7 +13,6 @@ read back in preference to the snapshots.
 import io
 import os
 import contextlib
-import tempfile
 import unittest
 
 import numpy as np
@@ -22,7 +21,7 @@ from dpdfoam.snapshots import (EXTENSION_COLUMNS, chain_segments, chain_shapes, 
                                extension_command, extension_rows, measure_extension, same_particles, snapshot_box,
                                unwrapped_chains, write_extension)
 from dpdfoam.timeseries import SuperBlockWindow
-from dpdtest_support import fake_dictionary, jackknife_fit, write_fit, write_snapshot
+from dpdtest_support import fake_dictionary, jackknife_fit, Temporary, write_fit, write_snapshot
 
 BOX_LO, BOX_HI = (0.0, 0.0, 0.0), (10.0, 4.0, 6.0)
 
@@ -41,18 +40,6 @@ def chain_snapshot(path, time=0.0, shift=0.0):
              [(0.9, 0, 0), (0, 0, 0.5), (0.9, 0, 0), (0, 0, 0.5), (0.9, 0, 0), (0.9, 0, 0)], [7, 3, 7, 3, 7, 7])
     return write_snapshot(path, position, ids=ids, species=species, species_names=("fluid", "polymer"), frozen=(0, 0),
                           lo=BOX_LO, hi=BOX_HI, time=time, bonds=bonds)
-
-
-class Temporary(unittest.TestCase):
-    def setUp(self):
-        self._tmp = tempfile.TemporaryDirectory()
-        self.tmp = self._tmp.name
-
-    def tearDown(self):
-        self._tmp.cleanup()
-
-    def path(self, *parts):
-        return os.path.join(self.tmp, *parts)
 
 
 class Particles(Temporary):
