@@ -11,14 +11,13 @@ per unit time and area of the log's reports come out as computed by hand.
 """
 import math
 import os
-import tempfile
 import unittest
 
 import numpy as np
 
 from dpdfoam.channel import (kT_against_shear, near_wall_layer, no_wall_reference, poiseuille_velocity, viscous_heating,
                              wall_event_rates, walls_mean_slip)
-from dpdtest_support import fake_dictionary, write_fit, write_table, write_text
+from dpdtest_support import fake_dictionary, Temporary, write_fit, write_table, write_text
 
 
 class Poiseuille(unittest.TestCase):
@@ -114,14 +113,7 @@ class NearWallLayer(unittest.TestCase):
         self.assertEqual(bulk_density, 3.0)
 
 
-class CaseReaders(unittest.TestCase):
-    def setUp(self):
-        self._tmp = tempfile.TemporaryDirectory()
-        self.tmp = self._tmp.name
-
-    def tearDown(self):
-        self._tmp.cleanup()
-
+class CaseReaders(Temporary):
     def test_wall_event_rates(self):
         case = os.path.join(self.tmp, "case")
         reports = "".join(f"Time = {t}  (step {100 * t})\n    kT = 1   momentum = (0 0 0)   meanVelocity = (0 0 0)\n"

@@ -12,7 +12,6 @@ where the case says (solidBelow, solidAbove, solidValues: geometry/GeometryDicti
 """
 import math
 import os
-import tempfile
 import unittest
 
 import numpy as np
@@ -20,7 +19,7 @@ from matplotlib.image import imsave
 
 from dpdfoam.mask import (case_mask, crack_in_box, distance_to_solid, local_pore_size, middle_of_first_run, on_grid,
                           open_band, read_image_mask, runs, runs_along_band)
-from dpdtest_support import fake_dictionary, write_text
+from dpdtest_support import fake_dictionary, Temporary, write_text
 
 
 def picture():
@@ -36,14 +35,7 @@ def picture():
 SOLID_OF_PICTURE = np.array([[0, 0, 0, 0, 0], [0, 1, 0, 0, 0], [0, 0, 0, 0, 0], [1, 1, 1, 1, 1]], dtype=bool)  # bottom first
 
 
-class ReadImage(unittest.TestCase):
-    def setUp(self):
-        self._tmp = tempfile.TemporaryDirectory()
-        self.tmp = self._tmp.name
-
-    def tearDown(self):
-        self._tmp.cleanup()
-
+class ReadImage(Temporary):
     def test_png(self):
         path = os.path.join(self.tmp, "mask.png")
         imsave(path, picture())

@@ -17,7 +17,6 @@ run says why and keeps fitSlipLength's errors.
 """
 import math
 import os
-import tempfile
 import unittest
 
 import numpy as np
@@ -29,21 +28,14 @@ from dpdfoam.sweep import (LongBlockRun, accounted_by, agreement, central_densit
                            profile_chi2, published_comparison, published_lines, slab_means, slip_falls_checks, sweep_colours,
                            sweep_slip, variant_of, wall_depletion, wall_distance, wall_layer_density, wall_layer_kT,
                            weighted_error)
-from dpdtest_support import jackknife_fit, write_fit, write_sampling, write_table, write_text
+from dpdtest_support import jackknife_fit, Temporary, write_fit, write_sampling, write_table, write_text
 
 NAN = float("nan")
 SWEEP = ("# case pairCoeffs/wall-wall/a slipLength_0 slipLength_1 slipLengthError_0 slipLengthError_1\n"
          "a10 10 1.9 2.1 0.06 0.08\na20 20 0.45 0.55 0.04 0.04\na40 40 0.1 none 0.03 0.03\n")
 
 
-class Sweeps(unittest.TestCase):
-    def setUp(self):
-        self._tmp = tempfile.TemporaryDirectory()
-        self.tmp = self._tmp.name
-
-    def tearDown(self):
-        self._tmp.cleanup()
-
+class Sweeps(Temporary):
     def test_variant_of(self):
         self.assertEqual(variant_of(["plotResults.py", "-test", "-noSlipWall"], ["-noSlipWall", "-dense"]),
                          ("-noSlipWall", "NoSlipWall"))
@@ -199,14 +191,7 @@ def long_block_case(root, name, per, m, u_blocks, walls=(-5.0, 5.0), exclude=0.5
     return case
 
 
-class LongBlocks(unittest.TestCase):
-    def setUp(self):
-        self._tmp = tempfile.TemporaryDirectory()
-        self.tmp = self._tmp.name
-
-    def tearDown(self):
-        self._tmp.cleanup()
-
+class LongBlocks(Temporary):
     def test_identical_blocks_within_super_blocks(self):
         rng = np.random.default_rng(40)
         per, m, bins = 4, 6, 20
