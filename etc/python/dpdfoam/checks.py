@@ -11,6 +11,8 @@ text; a check whose numbers hold a NaN or a missing value (None) fails whatever 
 import math
 import sys
 
+from .io import write_whole
+
 
 def finite(value):
     """Whether a number (or each of a sequence, not empty: an empty one is no measurement) is there and
@@ -147,11 +149,9 @@ def relative_difference(value, error, reference, reference_error):
 
 
 def write_results(path, lines, checks=None):
-    """A results file: the lines, then the checks' lines; printed as written."""
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
-        if checks is not None:
-            checks.write(f)
+    """A results file, written whole (dpdfoam.io.write_whole): the lines, then the checks' lines; printed
+    as written."""
+    write_whole(path, "".join(line + "\n" for line in list(lines) + (checks.lines() if checks is not None else [])))
     print_file(path)
 
 

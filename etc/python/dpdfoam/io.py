@@ -352,3 +352,10 @@ def foam_latest_fields(case, *names):
     there (foam_vector_field)."""
     t = foam_latest_time(case)
     return t, [foam_vector_field(os.path.join(case, t, name)) for name in names]
+
+
+def write_whole(path, text):
+    """text to path through path.tmp, replaced whole: a reader never sees half a file."""
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)

@@ -39,7 +39,7 @@ from collections import namedtuple
 from matplotlib.ticker import LogLocator, NullFormatter, ScalarFormatter
 
 from .blocks import SampledBins, region_temperature
-from .io import dictionary_number, dictionary_value, latest_fit, read_text, run_finished
+from .io import dictionary_number, dictionary_value, latest_fit, read_text, run_finished, write_whole
 from .plots import label as label_axes, plt, save
 from .snapshots import snapshot_box
 from .stats import BlockMean
@@ -359,13 +359,6 @@ def study_lines(name, test_mode, tol, rows, costs):
     for scene, r in rows.items():
         lines += scene_lines(scene, r, costs[scene])
     return lines + largest_lines(rows)
-
-
-def write_whole(path, text):
-    """text to path through path.tmp, replaced whole: a reader never sees half a table."""
-    with open(path + ".tmp", "w") as f:
-        f.write(text)
-    os.replace(path + ".tmp", path)
 
 
 # ---- Pictures ------------------------------------------------------------------------------------------

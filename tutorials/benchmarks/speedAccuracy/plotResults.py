@@ -23,10 +23,10 @@ Cost is CPU time (all threads) per particle per time unit: each integrator's med
 particle-step over its stable runs, over dt (dpdfoam.stepstudy.apply_cost_model); the per-run costs stay
 in the table, results.dat gives the medians and their spread.
 """
-import os
 import sys
 
 from dpdfoam.checks import Checks
+from dpdfoam.io import write_whole
 from dpdfoam.plots import label as label_axes, plt, save
 from dpdfoam.stepstudy import (apply_cost_model, as_accurate, crossing, draw_errors_against_cost, draw_stability_map,
                                first_unstable, largest_step, measured)
@@ -187,9 +187,7 @@ def main():
     costs = apply_cost_model(rows)
     plot(rows, reference)
     text = "\n".join(cost_lines(costs, reference) + stability_lines(rows) + speed_up_lines(rows, reference)) + "\n"
-    with open("results.dat.tmp", "w") as f:  # replaced whole: a reader never sees half a table
-        f.write(text)
-    os.replace("results.dat.tmp", "results.dat")
+    write_whole("results.dat", text)
     print(text, end="")
     failures = checks(rows, reference, "-test" in sys.argv[1:])
     failures.print_failures(summary=False)
